@@ -1,0 +1,73 @@
+// See level_lighting.h.
+#include "render/level_lighting.h"
+
+#include <OgreGpuProgramManager.h>
+#include <OgreHighLevelGpuProgram.h>
+#include <OgreHighLevelGpuProgramManager.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace obscura::render {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+// ericw-tools' default `_sunlight` is 0 (off); a typical outdoor map uses 100-300. 200 maps to a
+// sun of colour 1.0, which with the tone map in level.frag gives a bright but unclipped wall.
+constexpr double kSunlightUnit = 200.0;
+// `_sunlight2` (the sky dome) of 150 gives an ambient of about 0.4 from above.
+constexpr double kSkyDomeUnit = 375.0;
+
+Vec3 parseVec(const std::string& s, const Vec3& fallback) {
+    std::istringstream is(s);
+    Vec3 v;
+    if (!(is >> v.x >> v.y >> v.z)) return fallback;
+    return v;
+}
+
+Vec3 parseColour(const std::string& s) {
+    Vec3 c = parseVec(s, {1, 1, 1});
+    if (c.x > 1 || c.y > 1 || c.z > 1) c = c / 255.0;
+    return c;
+}
+
+Ogre::Vector3 toOgre(const Vec3& v) {
+    return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+}
+}  // namespace
+
+LevelLightingParams computeLevelLighting(const map::Level& level) {
+    LevelLightingParams p;
+    if (level.entities.empty()) return p;
+    const map::LevelEntity& world = level.entities.front();
+    const double sun = std::atof(world.value("_sunlight", "0").c_str());
+    if (sun > 0) {
+        // Default straight down, as in ericw-tools.
+        const Vec3 mangle = parseVec(world.value("_sun_mangle", "0 -90 0"), {0, -90, 0});
+        const double yaw = mangle.x * kPi / 180.0, pitch = mangle.y * kPi / 180.0;
+        // Direction the light travels, in Quake axes, converted to Y-up: (x, z, -y).
+        const Vec3 travelQ{std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch)};
+        p.sunDirection = normalize(-Vec3{travelQ.x, travelQ.z, -travelQ.y});
+        p.sunColour = parseColour(world.value("_sunlight_color", "255 255 255")) * (sun / kSunlightUnit);
+    }
+    const double dome = std::atof(world.value("_sunlight2", "0").c_str());
+    if (dome > 0) {
+        const Vec3 c = parseColour(world.value("_sunlight2_color", "255 255 255"));
+        p.skyAmbient = c * (dome / kSkyDomeUnit) + p.skyAmbient * 0.5;
+    }
+    return p;
+}
+
+void applyLevelLighting(const map::Level& level) {
+    const LevelLightingParams p = computeLevelLighting(level);
+    auto program = Ogre::HighLevelGpuProgramManager::getSingleton().getByName("Obscura/LevelFS", Ogre::RGN_AUTODETECT);
+    if (!program) throw std::runtime_error("GLSL program Obscura/LevelFS is missing (media/materials/level.programs)");
+    program->load();
+    auto params = program->getDefaultParameters();
+    params->setNamedConstant("sunDirection", toOgre(p.sunDirection));
+    params->setNamedConstant("sunColour", toOgre(p.sunColour));
+    params->setNamedConstant("skyAmbient", toOgre(p.skyAmbient));
+    params->setNamedConstant("groundAmbient", toOgre(p.groundAmbient));
+}
+
+}  // namespace obscura::render

@@ -1,0 +1,24 @@
+// Level-wide lighting constants from worldspawn keys (sun, sky ambient), pushed into the
+// Obscura/LevelFS program's uniforms. The values themselves are computed in plain C++
+// (computeLevelLighting) so they are testable without a GPU.
+#pragma once
+
+#include "map/level.h"
+
+namespace obscura::render {
+
+struct LevelLightingParams {
+    Vec3 sunDirection{0.35, 0.8, 0.45};  // towards the sun, unit
+    Vec3 sunColour{0, 0, 0};             // linear RGB
+    Vec3 skyAmbient{0.32, 0.35, 0.42};
+    Vec3 groundAmbient{0.16, 0.14, 0.12};
+};
+
+// Reads `_sunlight`, `_sun_mangle` ("yaw pitch roll", the direction sunlight travels, as in
+// ericw-tools), `_sunlight_color`, `_sunlight2` (sky-dome light) and `_sunlight2_color`.
+LevelLightingParams computeLevelLighting(const map::Level& level);
+
+// Sets the uniforms of Obscura/LevelFS (sunDirection, sunColour, skyAmbient, groundAmbient).
+void applyLevelLighting(const map::Level& level);
+
+}  // namespace obscura::render

@@ -1,0 +1,65 @@
+// See level_materials.h.
+#include "render/level_materials.h"
+
+#include "texgen/texgen.h"
+
+#include <OgreImage.h>
+#include <OgreMaterialManager.h>
+#include <OgreLogManager.h>
+#include <OgrePass.h>
+#include <OgreTechnique.h>
+#include <OgreTextureManager.h>
+#include <OgreTextureUnitState.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace obscura::render {
+
+namespace {
+// Generated fallback textures: 128 px is enough for a 64-texel Quake texture seen up close and
+// costs 64 KiB each; e3m4 has about 150 distinct names.
+constexpr int kFallbackTextureSize = 128;
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+}  // namespace
+
+LevelMaterials::LevelMaterials(std::string resourceGroup) : group_(std::move(resourceGroup)) {}
+
+LevelMaterials::~LevelMaterials() {
+    auto& mm = Ogre::MaterialManager::getSingleton();
+    for (auto& m : generatedMaterials_) mm.remove(m);
+    auto& tm = Ogre::TextureManager::getSingleton();
+    for (auto& t : generatedTextures_) tm.remove(t);
+}
+
+const std::string& LevelMaterials::resolve(const std::string& texture) {
+    const std::string key = lower(texture);
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+
+    auto& mm = Ogre::MaterialManager::getSingleton();
+    const std::string authored = "level/" + key;
+    if (mm.resourceExists(authored, group_)) return cache_[key] = authored;
+
+    // Fallback: a texture generated from the name on a clone of the base level material.
+    const texgen::ImageRGBA pixels = texgen::generateTexture(key, kFallbackTextureSize);
+    Ogre::Image image;
+    image.loadDynamicImage(const_cast<Ogre::uchar*>(pixels.pixels.data()), static_cast<Ogre::uint32>(pixels.width),
+                           static_cast<Ogre::uint32>(pixels.height), 1, Ogre::PF_BYTE_RGBA);
+    const std::string name = "generated/" + key;
+    Ogre::TexturePtr tex = Ogre::TextureManager::getSingleton().loadImage(name, group_, image);
+    generatedTextures_.push_back(tex);
+
+    Ogre::MaterialPtr base = mm.getByName("Obscura/Level", group_);
+    if (!base) throw std::runtime_error("material Obscura/Level is missing (media/materials/level.material)");
+    Ogre::MaterialPtr mat = base->clone(name);
+    mat->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTextureName(name);
+    generatedMaterials_.push_back(mat);
+    return cache_[key] = name;
+}
+
+}  // namespace obscura::render

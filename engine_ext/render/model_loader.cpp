@@ -1,0 +1,86 @@
+// See model_loader.h.
+#include "render/model_loader.h"
+
+#include "render/level_materials.h"
+
+#include <Ogre.h>
+
+#include <filesystem>
+
+namespace obscura::render {
+
+namespace fs = std::filesystem;
+
+namespace {
+// Appends a submesh's triangles (transformed to world space) to `out`.
+void appendTriangles(const Ogre::VertexData* vd, const Ogre::IndexData* id, const Ogre::Affine3& xf,
+                     TriangleMesh& out) {
+    const Ogre::VertexElement* pos = vd->vertexDeclaration->findElementBySemantic(Ogre::VES_POSITION);
+    Ogre::HardwareVertexBufferSharedPtr vb = vd->vertexBufferBinding->getBuffer(pos->getSource());
+    const auto base = static_cast<std::uint32_t>(out.vertices.size());
+    {
+        Ogre::HardwareBufferLockGuard lock(vb, Ogre::HardwareBuffer::HBL_READ_ONLY);
+        const auto* data = static_cast<const unsigned char*>(lock.pData) + vd->vertexStart * vb->getVertexSize();
+        for (size_t i = 0; i < vd->vertexCount; ++i, data += vb->getVertexSize()) {
+            float* p;
+            pos->baseVertexPointerToElement(const_cast<unsigned char*>(data), &p);
+            const Ogre::Vector3 w = xf * Ogre::Vector3(p[0], p[1], p[2]);
+            out.vertices.push_back({w.x, w.y, w.z});
+        }
+    }
+    Ogre::HardwareIndexBufferSharedPtr ib = id->indexBuffer;
+    Ogre::HardwareBufferLockGuard lock(ib, Ogre::HardwareBuffer::HBL_READ_ONLY);
+    const bool is32 = ib->getType() == Ogre::HardwareIndexBuffer::IT_32BIT;
+    for (size_t i = 0; i < id->indexCount; ++i) {
+        const size_t k = id->indexStart + i;
+        const std::uint32_t index = is32 ? static_cast<const std::uint32_t*>(lock.pData)[k]
+                                         : static_cast<const std::uint16_t*>(lock.pData)[k];
+        out.indices.push_back(base + index);
+    }
+}
+}  // namespace
+
+TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,
+                             const std::string& group, LevelMaterials& materials) {
+    auto& rgm = Ogre::ResourceGroupManager::getSingleton();
+    std::string meshName = model.mesh;
+    // A path: make its folder a resource location and load the file by name.
+    for (const fs::path& candidate : {fs::path(levelPath).parent_path() / model.mesh, fs::path(model.mesh)}) {
+        if (!model.mesh.empty() && fs::is_regular_file(candidate)) {
+            const std::string dir = fs::canonical(candidate).parent_path().string();
+            if (!rgm.resourceLocationExists(dir, group)) {
+                rgm.addResourceLocation(dir, "FileSystem", group);
+            }
+            meshName = candidate.filename().string();
+            break;
+        }
+    }
+    if (meshName.empty() || !rgm.resourceExists(group, meshName))
+        throw std::runtime_error(levelPath + ": misc_model mesh '" + model.mesh + "' not found");
+
+    Ogre::MeshPtr mesh = Ogre::MeshManager::getSingleton().load(meshName, group);
+    Ogre::Entity* entity = scene.createEntity(mesh);
+    for (unsigned i = 0; i < entity->getNumSubEntities(); ++i) {
+        Ogre::SubEntity* sub = entity->getSubEntity(i);
+        const std::string& wanted = mesh->getSubMesh(i)->getMaterialName();
+        if (!Ogre::MaterialManager::getSingleton().resourceExists(wanted, group) &&
+            !Ogre::MaterialManager::getSingleton().resourceExists(wanted, Ogre::RGN_DEFAULT))
+            sub->setMaterialName(materials.resolve(wanted), group);
+    }
+    Ogre::SceneNode* node = scene.getRootSceneNode()->createChildSceneNode(
+        Ogre::Vector3(static_cast<float>(model.origin.x), static_cast<float>(model.origin.y), static_cast<float>(model.origin.z)),
+        Ogre::Quaternion(Ogre::Radian(static_cast<float>(model.yaw)), Ogre::Vector3::UNIT_Y));
+    node->setScale(Ogre::Vector3(static_cast<float>(model.scale)));
+    node->attachObject(entity);
+    node->_update(true, false);
+
+    TriangleMesh tris;
+    const Ogre::Affine3 xf = node->_getFullTransform();
+    for (unsigned i = 0; i < mesh->getNumSubMeshes(); ++i) {
+        const Ogre::SubMesh* sm = mesh->getSubMesh(i);
+        appendTriangles(sm->useSharedVertices ? mesh->sharedVertexData : sm->vertexData, sm->indexData, xf, tris);
+    }
+    return tris;
+}
+
+}  // namespace obscura::render

@@ -1,0 +1,360 @@
+// See game_app.h.
+#include "app/game_app.h"
+
+#include "app/sdl_keys.h"
+#include "core/fixed_step.h"
+#include "map/map_compile.h"
+#include "render/hud.h"
+#include "render/level_geometry.h"
+#include "render/level_lighting.h"
+#include "render/level_materials.h"
+#include "render/model_loader.h"
+#include "render/prop_view.h"
+#include "sim/simulation.h"
+
+#include <Ogre.h>
+#include <OgreOverlaySystem.h>
+#include <OgreRTShaderSystem.h>
+#include <SDL2/SDL.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#ifndef OBSCURA_DATA_DIR
+#define OBSCURA_DATA_DIR "."
+#endif
+#ifndef OBSCURA_GENERATED_DIR
+#define OBSCURA_GENERATED_DIR "."
+#endif
+#ifndef OBSCURA_OGRE_PLUGIN_DIR
+#define OBSCURA_OGRE_PLUGIN_DIR "/usr/lib/x86_64-linux-gnu/OGRE"
+#endif
+
+namespace obscura {
+
+namespace {
+const char* const kResourceGroup = "Obscura";
+// Headless runs with no --ticks: 5 s of game time, enough to settle physics and show the level.
+constexpr long kDefaultHeadlessTicks = 300;
+// The hidden window only carries the GL context; frames go to an offscreen texture.
+constexpr unsigned kHiddenWindowSize = 64;
+
+double degToRad(double d) { return d * 3.14159265358979323846 / 180.0; }
+}  // namespace
+
+GameApp::GameApp(Settings settings, const SettingsParser& parser)
+    : OgreBites::ApplicationContext("Obscura"), settings_(std::move(settings)), parser_(parser), input_(settings_) {
+    if (settings_.dataDir.empty()) settings_.dataDir = OBSCURA_DATA_DIR;
+    if (settings_.level.empty()) settings_.level = dataPath("media/levels/arena.map");
+    if (settings_.headless && settings_.ticks == 0) settings_.ticks = kDefaultHeadlessTicks;
+}
+
+GameApp::~GameApp() = default;
+
+std::string GameApp::dataPath(const std::string& relative) const {
+    return (std::filesystem::path(settings_.dataDir) / relative).string();
+}
+
+void GameApp::createRoot() {
+    // Our own log (Bites would print hundreds of coloured lines to stdout otherwise).
+    std::string logFile = settings_.logFile;
+    if (logFile.empty()) logFile = mFSLayer->getWritablePath("obscura.log");
+    auto* logs = new Ogre::LogManager();
+    logs->createLog(logFile, true, false, false);
+    mRoot = OGRE_NEW Ogre::Root("", "", "");
+    mRoot->loadPlugin(OBSCURA_OGRE_PLUGIN_DIR "/RenderSystem_GL3Plus");
+    mRoot->loadPlugin(OBSCURA_OGRE_PLUGIN_DIR "/Codec_STBI");  // PNG load/save
+    mOverlaySystem = OGRE_NEW Ogre::OverlaySystem();
+}
+
+bool GameApp::oneTimeConfig() {
+    Ogre::RenderSystem* rs = mRoot->getRenderSystemByName("OpenGL 3+ Rendering Subsystem");
+    if (!rs) throw std::runtime_error("OGRE's RenderSystem_GL3Plus is not available (libogre-1.12 install?)");
+    rs->setConfigOption("Full Screen", settings_.fullscreen && !settings_.headless ? "Yes" : "No");
+    rs->setConfigOption("VSync", settings_.vsync && !settings_.headless ? "Yes" : "No");
+    mRoot->setRenderSystem(rs);
+    return true;
+}
+
+void GameApp::setup() {
+    // SDL needs an X display for the GL context even headless; say so instead of crashing.
+    if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
+        const char* display = std::getenv("DISPLAY");
+        throw std::runtime_error(std::string("cannot open an X display (DISPLAY=") + (display ? display : "unset") +
+                                 "): " + SDL_GetError() +
+                                 ". Run under Xvfb, e.g. `xvfb-run -a obscura --headless`, or use scripts/play.sh");
+    }
+    mRoot->initialise(false);
+    if (settings_.headless) {
+        Ogre::NameValuePairList misc{{"hidden", "true"}};
+        auto win = createWindow("Obscura (headless)", kHiddenWindowSize, kHiddenWindowSize, misc);
+        SDL_HideWindow(win.native);
+    } else {
+        createWindow("Obscura", static_cast<Ogre::uint32>(settings_.width), static_cast<Ogre::uint32>(settings_.height));
+    }
+    locateResources();
+    if (!initialiseRTShaderSystem()) throw std::runtime_error("cannot initialise OGRE's RTSS");
+    loadResources();
+    mRoot->addFrameListener(this);
+    addInputListener(this);
+}
+
+void GameApp::locateResources() {
+    auto& rgm = Ogre::ResourceGroupManager::getSingleton();
+    // RTSS shader library (Debian ships it; the rest of Debian's resources.cfg points at missing files).
+    const std::string rtss = "/usr/share/OGRE/Media/RTShaderLib";
+    rgm.addResourceLocation(rtss + "/GLSL", "FileSystem", Ogre::RGN_INTERNAL);
+    rgm.addResourceLocation(rtss + "/materials", "FileSystem", Ogre::RGN_INTERNAL);
+    // Our own resources (media/resources.cfg lists them relative to the data folder).
+    Ogre::ConfigFile cf;
+    cf.load(dataPath("media/resources.cfg"));
+    for (const auto& [section, settings] : cf.getSettingsBySection()) {
+        for (const auto& [type, location] : settings) {
+            std::string path = location;
+            if (path.rfind("@generated/", 0) == 0)
+                path = std::string(OBSCURA_GENERATED_DIR) + "/" + path.substr(11);
+            else if (path.front() != '/')
+                path = dataPath(path);
+            rgm.addResourceLocation(path, type, section == "General" ? std::string(kResourceGroup) : section);
+        }
+    }
+}
+
+void GameApp::shutdown() {
+    // Order matters (see shared/README): our OGRE objects first, then RTSS, overlays, root.
+    hud_.reset();
+    props_.reset();
+    levelGeometry_.reset();
+    materials_.reset();
+    if (scene_ && mShaderGenerator) mShaderGenerator->removeSceneManager(scene_);
+    if (offscreen_) {
+        Ogre::TextureManager::getSingleton().remove(offscreen_);
+        offscreen_.reset();
+    }
+    if (scene_) {
+        scene_->removeRenderQueueListener(mOverlaySystem);
+        mRoot->destroySceneManager(scene_);
+        scene_ = nullptr;
+    }
+    OgreBites::ApplicationContext::shutdown();
+}
+
+void GameApp::loadLevel() {
+    map::CompileOptions options;
+    options.unitsPerMetre = settings_.mapScale;
+    std::vector<std::string> warnings;
+    level_ = std::make_unique<map::Level>(map::loadLevel(settings_.level, options, &warnings));
+    for (const auto& w : warnings) Ogre::LogManager::getSingleton().logWarning(w);
+    if (!warnings.empty())
+        std::cerr << "obscura: " << warnings.size() << " warnings loading " << settings_.level
+                  << " (see the log)\n";
+    if (!level_->unknownClassnames.empty()) {
+        std::string list;
+        for (const auto& c : level_->unknownClassnames) list += (list.empty() ? "" : ", ") + c;
+        Ogre::LogManager::getSingleton().logMessage("level: unknown entity classes (ignored): " + list);
+    }
+}
+
+void GameApp::createScene() {
+    scene_ = mRoot->createSceneManager();
+    scene_->addRenderQueueListener(mOverlaySystem);
+    mShaderGenerator->addSceneManager(scene_);
+    scene_->setAmbientLight(Ogre::ColourValue(0.3f, 0.3f, 0.3f));
+
+    camera_ = scene_->createCamera("PlayerCamera");
+    // Near plane 5 cm: the capsule keeps the eye at least its radius (0.35 m) from walls.
+    camera_->setNearClipDistance(0.05f);
+    camera_->setFarClipDistance(2000.0f);
+    cameraNode_ = scene_->getRootSceneNode()->createChildSceneNode();
+    cameraNode_->attachObject(camera_);
+
+    Ogre::RenderTarget* target = getRenderWindow();
+    if (settings_.headless) {
+        offscreen_ = Ogre::TextureManager::getSingleton().createManual(
+            "Obscura/Offscreen", kResourceGroup, Ogre::TEX_TYPE_2D, static_cast<Ogre::uint>(settings_.width),
+            static_cast<Ogre::uint>(settings_.height), 0, Ogre::PF_BYTE_RGB, Ogre::TU_RENDERTARGET);
+        target = offscreen_->getBuffer()->getRenderTarget();
+        target->setAutoUpdated(true);
+    }
+    viewport_ = target->addViewport(camera_);
+    viewport_->setBackgroundColour(Ogre::ColourValue(0.05f, 0.05f, 0.06f));
+    viewport_->setMaterialScheme(Ogre::RTShader::ShaderGenerator::DEFAULT_SCHEME_NAME);
+    viewport_->setOverlaysEnabled(true);
+    const double aspect = static_cast<double>(viewport_->getActualWidth()) / viewport_->getActualHeight();
+    camera_->setAspectRatio(static_cast<Ogre::Real>(aspect));
+    // Settings give the horizontal FOV (what players tune); OGRE wants the vertical one.
+    const double fovY = 2.0 * std::atan(std::tan(degToRad(settings_.fov) * 0.5) / aspect);
+    camera_->setFOVy(Ogre::Radian(static_cast<Ogre::Real>(fovY)));
+
+    materials_ = std::make_unique<render::LevelMaterials>(kResourceGroup);
+    auto start = std::chrono::steady_clock::now();
+    render::applyLevelLighting(*level_);  // before any level material loads: they copy these defaults
+    levelGeometry_ = std::make_unique<render::LevelGeometry>(*scene_, *level_, *materials_);
+
+    // misc_model meshes: rendered, and their triangles become static colliders.
+    std::vector<TriangleMesh> modelMeshes;
+    for (const auto& m : level_->models)
+        modelMeshes.push_back(render::placeModel(*scene_, m, settings_.level, kResourceGroup, *materials_));
+
+    sim::SimConfig config;
+    config.tickRate = settings_.tickRate;
+    config.seed = settings_.seed;
+    sim_ = std::make_unique<sim::Simulation>(*level_, config, modelMeshes);
+    previousPlayer_ = std::make_unique<sim::PlayerState>(sim_->player());
+    props_ = std::make_unique<render::PropView>(*scene_, *materials_);
+
+    const auto& s = levelGeometry_->stats();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::ostringstream os;
+    os << "level " << settings_.level << ": " << level_->brushes.size() << " brushes, " << s.triangles
+       << " triangles in " << s.batches << " batches (" << s.chunks << " chunks), " << s.lights << " lights, "
+       << materials_->generatedCount() << " generated materials; scene built in " << ms << " ms";
+    Ogre::LogManager::getSingleton().logMessage(os.str());
+    std::cout << os.str() << "\n";
+
+    hud_ = std::make_unique<render::Hud>();
+    hud_->setPanelVisible(settings_.showDebugPanel);
+    hud_->addPanelSection("Player", [this] {
+        const auto& p = sim_->player();
+        ImGui::Text("tick %llu", static_cast<unsigned long long>(sim_->tick()));
+        ImGui::Text("feet %.2f %.2f %.2f", p.feet.x, p.feet.y, p.feet.z);
+        ImGui::Text("speed %.2f m/s %s", std::hypot(p.velocity.x, p.velocity.z), p.onGround ? "on ground" : "in air");
+    });
+    hud_->addPanelSection("Level", [this] {
+        const auto& st = levelGeometry_->stats();
+        ImGui::Text("%zu batches, %zu triangles, %zu lights", st.batches, st.triangles, st.lights);
+    });
+}
+
+void GameApp::stepSimulation() {
+    handleTriggeredActions();
+    *previousPlayer_ = sim_->player();
+    sim_->step(input_.takeCommand());
+}
+
+void GameApp::handleTriggeredActions() {
+    for (Action a : input_.takeTriggered()) {
+        switch (a) {
+            case Action::ToggleDebug: hud_->setPanelVisible(!hud_->panelVisible()); break;
+            case Action::Menu:
+                if (settings_.headless) break;
+                mouseGrabbed_ = !mouseGrabbed_;
+                setWindowGrab(mouseGrabbed_);
+                break;
+            case Action::Screenshot: writeScreenshot("obscura-" + std::to_string(sim_->tick()) + ".png"); break;
+            default: break;  // movement actions are read as held states; cycle_ao etc. arrive with their issues
+        }
+    }
+}
+
+void GameApp::updateView(double alpha) {
+    const auto& a = *previousPlayer_;
+    const auto& b = sim_->player();
+    const Vec3 ea = a.eye(), eb = b.eye();
+    const Vec3 eye = ea + (eb - ea) * alpha;
+    // Interpolate angles along the short way round.
+    double dyaw = b.yaw - a.yaw;
+    dyaw = std::remainder(dyaw, 2.0 * 3.14159265358979323846);
+    const double yaw = a.yaw + dyaw * alpha;
+    const double pitch = a.pitch + (b.pitch - a.pitch) * alpha;
+    cameraNode_->setPosition(static_cast<float>(eye.x), static_cast<float>(eye.y), static_cast<float>(eye.z));
+    cameraNode_->setOrientation(Ogre::Quaternion(Ogre::Radian(static_cast<float>(yaw)), Ogre::Vector3::UNIT_Y) *
+                                Ogre::Quaternion(Ogre::Radian(static_cast<float>(pitch)), Ogre::Vector3::UNIT_X));
+    std::vector<render::PropPose> poses;
+    for (const auto& b : sim_->bodyPoses()) poses.push_back({b.position, b.qx, b.qy, b.qz, b.qw, b.halfExtents});
+    props_->update(poses);
+}
+
+void GameApp::renderFrame(double frameMs) {
+    render::HudState hs;
+    hs.frameMs = frameMs;
+    hs.frameMsIsFixed = settings_.headless;
+    hud_->update(hs);
+    mRoot->renderOneFrame();
+}
+
+void GameApp::writeScreenshot(const std::string& path) {
+    Ogre::RenderTarget* target = offscreen_ ? offscreen_->getBuffer()->getRenderTarget() : getRenderWindow();
+    const auto w = target->getWidth(), h = target->getHeight();
+    Ogre::Image image(Ogre::PF_BYTE_RGB, w, h);
+    target->copyContentsToMemory(image.getPixelBox(), image.getPixelBox());
+    image.save(path);
+}
+
+int GameApp::run() {
+    initApp();
+    if (!mRoot || getRenderWindow() == nullptr) throw std::runtime_error("OGRE failed to initialise (see the log)");
+    loadLevel();
+    createScene();
+
+    if (!settings_.headless) {
+        mouseGrabbed_ = true;
+        setWindowGrab(true);
+    }
+    const double dt = 1.0 / settings_.tickRate;
+    FixedStepClock clock(dt);
+    auto last = std::chrono::steady_clock::now();
+    double frameMs = dt * 1000.0;
+    while (!quit_) {
+        pollEvents();
+        if (settings_.headless) {
+            // Deterministic: exactly one tick per rendered frame, no wall clock involved.
+            stepSimulation();
+            updateView(1.0);
+        } else {
+            const auto now = std::chrono::steady_clock::now();
+            const double frameSeconds = std::chrono::duration<double>(now - last).count();
+            last = now;
+            frameMs = frameSeconds * 1000.0;
+            for (int n = clock.advance(frameSeconds); n > 0; --n) stepSimulation();
+            updateView(clock.alpha());
+        }
+        renderFrame(frameMs);
+        if (mRoot->endRenderingQueued()) quit_ = true;
+        if (settings_.ticks > 0 && static_cast<long>(sim_->tick()) >= settings_.ticks) quit_ = true;
+    }
+
+    if (!settings_.screenshot.empty()) {
+        writeScreenshot(settings_.screenshot);
+        std::cout << "screenshot " << settings_.screenshot << "\n";
+    }
+    std::cout << "state-hash " << sim_->stateHashHex() << "\n";
+    closeApp();
+    return 0;
+}
+
+bool GameApp::keyPressed(const OgreBites::KeyboardEvent& evt) {
+    if (evt.repeat) return true;
+    const std::string name = keyNameFromKeycode(evt.keysym.sym);
+    if (!name.empty()) input_.press(name);
+    return true;
+}
+
+bool GameApp::keyReleased(const OgreBites::KeyboardEvent& evt) {
+    const std::string name = keyNameFromKeycode(evt.keysym.sym);
+    if (!name.empty()) input_.release(name);
+    return true;
+}
+
+bool GameApp::mouseMoved(const OgreBites::MouseMotionEvent& evt) {
+    if (mouseGrabbed_ || settings_.headless) input_.mouseMotion(evt.xrel, evt.yrel);
+    return true;
+}
+
+bool GameApp::mousePressed(const OgreBites::MouseButtonEvent& evt) {
+    const std::string name = keyNameFromMouseButton(evt.button);
+    if (!name.empty()) input_.press(name);
+    return true;
+}
+
+bool GameApp::mouseReleased(const OgreBites::MouseButtonEvent& evt) {
+    const std::string name = keyNameFromMouseButton(evt.button);
+    if (!name.empty()) input_.release(name);
+    return true;
+}
+
+}  // namespace obscura

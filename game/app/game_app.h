@@ -1,0 +1,83 @@
+// The game's OGRE/SDL glue (through OgreBites): window or headless render target, resources,
+// RTSS, level rendering, HUD, input, and the fixed-tick main loop. The game owns the simulation
+// and pushes its state to rendering one way; nothing here feeds render state back into it.
+#pragma once
+
+#include "input.h"
+#include "settings.h"
+
+#include <OgreApplicationContext.h>
+#include <OgreInput.h>
+
+#include <memory>
+#include <string>
+
+namespace Ogre {
+class Camera;
+class RenderTexture;
+class SceneManager;
+class SceneNode;
+class Viewport;
+}  // namespace Ogre
+
+namespace obscura {
+namespace map { struct Level; }
+namespace sim { class Simulation; struct PlayerState; }
+namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; }
+
+class GameApp : public OgreBites::ApplicationContext, public OgreBites::InputListener {
+public:
+    GameApp(Settings settings, const SettingsParser& parser);
+    ~GameApp() override;
+
+    // Runs the game until quit or --ticks; returns the process exit code. Throws on load errors.
+    int run();
+
+protected:
+    // OgreBites::ApplicationContext: no plugins.cfg, no config dialog, our own resources.
+    void createRoot() override;
+    bool oneTimeConfig() override;
+    void setup() override;
+    void locateResources() override;
+    void shutdown() override;
+
+    // OgreBites::InputListener
+    bool keyPressed(const OgreBites::KeyboardEvent& evt) override;
+    bool keyReleased(const OgreBites::KeyboardEvent& evt) override;
+    bool mouseMoved(const OgreBites::MouseMotionEvent& evt) override;
+    bool mousePressed(const OgreBites::MouseButtonEvent& evt) override;
+    bool mouseReleased(const OgreBites::MouseButtonEvent& evt) override;
+
+private:
+    void loadLevel();
+    void createScene();
+    void stepSimulation();
+    void updateView(double alpha);
+    void handleTriggeredActions();
+    void renderFrame(double frameMs);
+    void writeScreenshot(const std::string& path);
+    std::string dataPath(const std::string& relative) const;
+
+    Settings settings_;
+    const SettingsParser& parser_;
+    InputState input_;
+
+    std::unique_ptr<map::Level> level_;
+    std::unique_ptr<sim::Simulation> sim_;
+    std::unique_ptr<sim::PlayerState> previousPlayer_;  // for render interpolation
+
+    Ogre::SceneManager* scene_ = nullptr;
+    Ogre::Camera* camera_ = nullptr;
+    Ogre::SceneNode* cameraNode_ = nullptr;
+    Ogre::Viewport* viewport_ = nullptr;
+    Ogre::TexturePtr offscreen_;  // headless render target
+    std::unique_ptr<render::LevelMaterials> materials_;
+    std::unique_ptr<render::LevelGeometry> levelGeometry_;
+    std::unique_ptr<render::PropView> props_;
+    std::unique_ptr<render::Hud> hud_;
+
+    bool quit_ = false;
+    bool mouseGrabbed_ = false;
+};
+
+}  // namespace obscura

@@ -1,0 +1,27 @@
+// obscura: the game executable. Parses settings, runs the game, and turns every load-time error
+// into one clear line on stderr and a non-zero exit.
+#include "app/game_app.h"
+#include "settings.h"
+
+#include <OgreException.h>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    try {
+        obscura::SettingsParser parser;
+        obscura::Settings settings;
+        if (!parser.parse(argc, argv, settings)) return 0;  // --help
+        obscura::GameApp app(std::move(settings), parser);
+        return app.run();
+    } catch (const obscura::SettingsError& e) {
+        std::cerr << "obscura: " << e.what() << "\n";
+        return 2;
+    } catch (const Ogre::Exception& e) {
+        std::cerr << "obscura: OGRE error: " << e.getFullDescription() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "obscura: " << e.what() << "\n";
+        return 1;
+    }
+}

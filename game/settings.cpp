@@ -1,0 +1,241 @@
+// Settings table, parsing and validation. See settings.h.
+#include "settings.h"
+
+#include <boost/program_options.hpp>
+
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
+
+namespace po = boost::program_options;
+
+namespace obscura {
+
+namespace {
+
+const char* const kActionNames[] = {"forward", "back", "left", "right", "jump", "crouch", "sprint", "fire",
+                                    "reload", "throw", "cycle_ao", "ao_only_view", "toggle_debug",
+                                    "screenshot", "menu"};
+static_assert(sizeof(kActionNames) / sizeof(kActionNames[0]) == static_cast<size_t>(Action::Count));
+
+std::vector<std::string> makeKeyNames() {
+    std::vector<std::string> k;
+    for (char c = 'a'; c <= 'z'; ++c) k.emplace_back(1, c);
+    for (char c = '0'; c <= '9'; ++c) k.emplace_back(1, c);
+    for (const char* n : {"space", "return", "escape", "tab", "backspace", "lshift", "rshift", "lctrl", "rctrl",
+                          "lalt", "ralt", "up", "down", "left", "right", "minus", "equals", "comma", "period",
+                          "slash", "grave", "mouse1", "mouse2", "mouse3"})
+        k.emplace_back(n);
+    for (int i = 1; i <= 12; ++i) k.push_back("f" + std::to_string(i));
+    return k;
+}
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r");
+    if (b == std::string::npos) return {};
+    const auto e = s.find_last_not_of(" \t\r");
+    return s.substr(b, e - b + 1);
+}
+
+[[noreturn]] void fail(const std::string& where, const std::string& key, const std::string& problem) {
+    throw SettingsError(where + ": setting '" + key + "': " + problem);
+}
+
+bool parseBool(const std::string& v, const std::string& where, const std::string& key) {
+    if (v == "1" || v == "true" || v == "yes" || v == "on") return true;
+    if (v == "0" || v == "false" || v == "no" || v == "off") return false;
+    fail(where, key, "'" + v + "' is not a boolean, expected true/false/1/0/yes/no/on/off");
+}
+
+double parseNumber(const std::string& v, const std::string& where, const std::string& key) {
+    errno = 0;
+    char* end = nullptr;
+    const double d = std::strtod(v.c_str(), &end);
+    if (v.empty() || *end != '\0' || errno == ERANGE || d != d)
+        fail(where, key, "'" + v + "' is not a number");
+    return d;
+}
+
+// Numbers out of range are clamped with a warning (a knob typed too large should still run).
+double parseClamped(const std::string& v, double lo, double hi, const std::string& where, const std::string& key) {
+    const double d = parseNumber(v, where, key);
+    if (d < lo || d > hi) {
+        const double c = d < lo ? lo : hi;
+        std::cerr << "warning: " << where << ": setting '" << key << "' = " << v << " is outside [" << lo << ", "
+                  << hi << "], clamped to " << c << "\n";
+        return c;
+    }
+    return d;
+}
+
+}  // namespace
+
+const char* actionName(Action a) { return kActionNames[static_cast<int>(a)]; }
+
+std::optional<Action> actionFromName(const std::string& name) {
+    for (int i = 0; i < static_cast<int>(Action::Count); ++i)
+        if (name == kActionNames[i]) return static_cast<Action>(i);
+    return std::nullopt;
+}
+
+const std::vector<std::string>& keyNames() {
+    static const std::vector<std::string> names = makeKeyNames();
+    return names;
+}
+
+bool isKeyName(const std::string& name) {
+    for (const auto& k : keyNames())
+        if (k == name) return true;
+    return false;
+}
+
+Settings::Settings() {
+    // Conventional FPS defaults. O is reserved for cycling the AO modes.
+    bindings = {{Action::Forward, "w"},      {Action::Back, "s"},         {Action::Left, "a"},
+                {Action::Right, "d"},        {Action::Jump, "space"},     {Action::Crouch, "lctrl"},
+                {Action::Sprint, "lshift"},  {Action::Fire, "mouse1"},    {Action::Reload, "r"},
+                {Action::Throw, "g"},        {Action::CycleAo, "o"},      {Action::AoOnlyView, "p"},
+                {Action::ToggleDebug, "f1"}, {Action::Screenshot, "f12"}, {Action::Menu, "escape"}};
+}
+
+// One entry per setting: its name, help, and how it is applied from a string.
+struct Option {
+    std::string name;
+    std::string help;
+    std::function<void(Settings&, const std::string& value, const std::string& where)> apply;
+    bool isFlag = false;  // may be given without a value on the command line (means true)
+};
+
+struct SettingsParser::Impl {
+    std::vector<Option> options;
+    po::options_description desc{"Obscura options"};
+
+    void add(Option o) { options.push_back(std::move(o)); }
+    const Option* find(const std::string& name) const {
+        for (const auto& o : options)
+            if (o.name == name) return &o;
+        return nullptr;
+    }
+};
+
+SettingsParser::SettingsParser() : impl_(new Impl) {
+    using S = Settings;
+    using W = const std::string&;
+    auto& I = *impl_;
+    auto str = [](std::string S::*m) { return [m](S& s, W v, W) { s.*m = v; }; };
+    auto flag = [](bool S::*m, const std::string& name) {
+        return [m, name](S& s, W v, W where) { s.*m = parseBool(v, where, name); };
+    };
+    auto num = [](double S::*m, const std::string& name, double lo, double hi) {
+        return [m, name, lo, hi](S& s, W v, W where) { s.*m = parseClamped(v, lo, hi, where, name); };
+    };
+    auto integer = [](int S::*m, const std::string& name, double lo, double hi) {
+        return [m, name, lo, hi](S& s, W v, W where) { s.*m = static_cast<int>(parseClamped(v, lo, hi, where, name)); };
+    };
+
+    I.add({"level", "level .map file (default: media/levels/arena.map)", str(&S::level)});
+    I.add({"map-scale", "map units per metre (0 = worldspawn 'units_per_metre' or 32)", num(&S::mapScale, "map-scale", 0, 1024)});
+    I.add({"seed", "simulation RNG seed", [](S& s, W v, W where) {
+               char* end = nullptr;
+               errno = 0;
+               const unsigned long long x = std::strtoull(v.c_str(), &end, 0);
+               if (v.empty() || *end || errno == ERANGE || v[0] == '-') fail(where, "seed", "'" + v + "' is not an unsigned integer");
+               s.seed = x;
+           }});
+    I.add({"tick-rate", "simulation ticks per second", num(&S::tickRate, "tick-rate", 10, 240)});
+    // 16..8192: below 16 px nothing is visible; above 8192 exceeds GL3 texture limits.
+    I.add({"width", "frame width in pixels", integer(&S::width, "width", 16, 8192)});
+    I.add({"height", "frame height in pixels", integer(&S::height, "height", 16, 8192)});
+    I.add({"fullscreen", "fullscreen window", flag(&S::fullscreen, "fullscreen"), true});
+    I.add({"vsync", "wait for vertical sync", flag(&S::vsync, "vsync"), true});
+    I.add({"fov", "horizontal field of view in degrees", num(&S::fov, "fov", 40, 140)});
+    I.add({"mouse-sensitivity", "mouse sensitivity (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
+    I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
+    I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});
+    I.add({"ticks", "run this many simulation ticks, then exit (headless default 300)", [](S& s, W v, W where) {
+               s.ticks = static_cast<long>(parseClamped(v, 0, 1e9, where, "ticks"));
+           }});
+    I.add({"screenshot", "write the last rendered frame to this PNG file", str(&S::screenshot)});
+    I.add({"config", "config file of 'key = value' lines (same names as these options)", str(&S::configFile)});
+    I.add({"data-dir", "folder holding media/ and shaders/", str(&S::dataDir)});
+    I.add({"log", "OGRE log file (default: obscura.log in the cache folder)", str(&S::logFile)});
+    I.add({"debug-panel", "show the ImGui debug panel at start", flag(&S::showDebugPanel, "debug-panel"), true});
+    for (int a = 0; a < static_cast<int>(Action::Count); ++a) {
+        const auto action = static_cast<Action>(a);
+        const std::string name = std::string("bind-") + actionName(action);
+        I.add({name, std::string("key for '") + actionName(action) + "'", [action, name](S& s, W v, W where) {
+                   if (!isKeyName(v)) fail(where, name, "unknown key '" + v + "'");
+                   s.bindings[action] = v;
+               }});
+    }
+
+    I.desc.add_options()("help,h", "print this help and exit");
+    for (const auto& o : I.options) {
+        if (o.isFlag)
+            I.desc.add_options()(o.name.c_str(), po::value<std::string>()->implicit_value("true"), o.help.c_str());
+        else
+            I.desc.add_options()(o.name.c_str(), po::value<std::string>(), o.help.c_str());
+    }
+}
+
+SettingsParser::~SettingsParser() { delete impl_; }
+
+bool SettingsParser::isKnown(const std::string& key) const { return impl_->find(key) != nullptr; }
+
+std::string SettingsParser::help() const {
+    std::ostringstream os;
+    os << "Usage: obscura [options]\n" << impl_->desc;
+    return os.str();
+}
+
+void SettingsParser::apply(const std::string& key, const std::string& value, Settings& s, const std::string& where) const {
+    const Option* o = impl_->find(key);
+    if (!o) throw SettingsError(where + ": unknown setting '" + key + "'");
+    o->apply(s, value, where);
+}
+
+bool SettingsParser::parse(int argc, const char* const argv[], Settings& out) {
+    po::variables_map vm;
+    po::parsed_options parsed(&impl_->desc);
+    try {
+        parsed = po::command_line_parser(argc, argv).options(impl_->desc).run();
+    } catch (const po::error& e) {
+        throw SettingsError(std::string("command line: ") + e.what() + " (see --help)");
+    }
+    po::store(parsed, vm);
+    if (vm.count("help")) {
+        std::cout << help();
+        return false;
+    }
+
+    // The config file first, then the command line on top of it.
+    std::string config;
+    if (vm.count("config")) config = vm["config"].as<std::string>();
+    if (!config.empty()) {
+        std::ifstream in(config);
+        if (!in) throw SettingsError(config + ": cannot open config file");
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n) {
+            const auto hash = line.find('#');
+            if (hash != std::string::npos) line.resize(hash);
+            line = trim(line);
+            if (line.empty()) continue;
+            const auto eq = line.find('=');
+            const std::string where = config + ":" + std::to_string(n);
+            if (eq == std::string::npos) throw SettingsError(where + ": expected 'key = value', got '" + line + "'");
+            const std::string key = trim(line.substr(0, eq));
+            if (key == "config") throw SettingsError(where + ": a config file cannot name another config file");
+            apply(key, trim(line.substr(eq + 1)), out, where);
+        }
+    }
+    for (const auto& opt : parsed.options) {
+        if (opt.string_key == "help") continue;
+        apply(opt.string_key, opt.value.empty() ? std::string() : opt.value.front(), out, "command line");
+    }
+    return true;
+}
+
+}  // namespace obscura

@@ -1,0 +1,78 @@
+// Obscura's settings: one table of options shared by the command line (Boost.ProgramOptions),
+// the config file (`key = value` lines) and the replay `set` command, so every setting has one
+// name, one parser and one range check everywhere.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace obscura {
+
+// Thrown for bad input; the message names the source (file:line or "command line") and the problem.
+struct SettingsError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Game actions a key or mouse button can be bound to. O is reserved for cycle_ao.
+enum class Action {
+    Forward, Back, Left, Right, Jump, Crouch, Sprint, Fire, Reload, Throw,
+    CycleAo, AoOnlyView, ToggleDebug, Screenshot, Menu, Count
+};
+const char* actionName(Action a);
+std::optional<Action> actionFromName(const std::string& name);
+
+struct Settings {
+    // Level and simulation
+    std::string level;           // .map path; empty = the default level
+    double mapScale = 0;         // map units per metre; 0 = from the map (worldspawn) or 32
+    std::uint64_t seed = 1;
+    double tickRate = 60;
+    // Display
+    int width = 1280, height = 720;
+    bool fullscreen = false;
+    bool vsync = true;
+    double fov = 90;             // horizontal degrees
+    // Input
+    double mouseSensitivity = 1.0;  // multiplies 0.022 deg per count (Quake's m_yaw)
+    bool invertMouse = false;
+    std::map<Action, std::string> bindings;  // action -> key name (see keyNames())
+    // Headless runs
+    bool headless = false;
+    long ticks = 0;              // 0 = run until quit (windowed) / 300 (headless)
+    std::string screenshot;      // PNG written from the last frame
+    // Paths
+    std::string configFile;
+    std::string dataDir;         // holds media/ and shaders/
+    std::string logFile;
+    bool showDebugPanel = false;
+
+    Settings();  // fills default bindings
+};
+
+// Valid key names (the same names replays use): a-z, 0-9, space, lshift, mouse1...
+const std::vector<std::string>& keyNames();
+bool isKeyName(const std::string& name);
+
+class SettingsParser {
+public:
+    SettingsParser();
+    ~SettingsParser();
+
+    // Parses argv, then the config file (explicit --config, or none). Command-line values win.
+    // Returns false if --help was printed.
+    bool parse(int argc, const char* const argv[], Settings& out);
+    // Applies one `key value` at run time (replay `set`, the menu). Throws SettingsError.
+    void apply(const std::string& key, const std::string& value, Settings& s, const std::string& where) const;
+    bool isKnown(const std::string& key) const;
+    std::string help() const;
+
+private:
+    struct Impl;
+    Impl* impl_;
+};
+
+}  // namespace obscura
