@@ -37,7 +37,6 @@
 namespace obscura {
 
 namespace {
-const char* const kResourceGroup = "Obscura";
 // Headless runs with no --ticks: 5 s of game time, enough to settle physics and show the level.
 constexpr long kDefaultHeadlessTicks = 300;
 // The hidden window only carries the GL context; frames go to an offscreen texture.
@@ -109,6 +108,8 @@ void GameApp::locateResources() {
     const std::string rtss = "/usr/share/OGRE/Media/RTShaderLib";
     rgm.addResourceLocation(rtss + "/GLSL", "FileSystem", Ogre::RGN_INTERNAL);
     rgm.addResourceLocation(rtss + "/materials", "FileSystem", Ogre::RGN_INTERNAL);
+    // Debian installs OgreUnifiedShader.h (needed by RTSS shaders) beside the shadow-volume programs.
+    rgm.addResourceLocation("/usr/share/OGRE/Media/ShadowVolume", "FileSystem", Ogre::RGN_INTERNAL);
     // Our own resources (media/resources.cfg lists them relative to the data folder).
     Ogre::ConfigFile cf;
     cf.load(dataPath("media/resources.cfg"));
@@ -119,7 +120,7 @@ void GameApp::locateResources() {
                 path = std::string(OBSCURA_GENERATED_DIR) + "/" + path.substr(11);
             else if (path.front() != '/')
                 path = dataPath(path);
-            rgm.addResourceLocation(path, type, section == "General" ? std::string(kResourceGroup) : section);
+            rgm.addResourceLocation(path, type, section);
         }
     }
 }
@@ -175,7 +176,7 @@ void GameApp::createScene() {
     Ogre::RenderTarget* target = getRenderWindow();
     if (settings_.headless) {
         offscreen_ = Ogre::TextureManager::getSingleton().createManual(
-            "Obscura/Offscreen", kResourceGroup, Ogre::TEX_TYPE_2D, static_cast<Ogre::uint>(settings_.width),
+            "Obscura/Offscreen", Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_2D, static_cast<Ogre::uint>(settings_.width),
             static_cast<Ogre::uint>(settings_.height), 0, Ogre::PF_BYTE_RGB, Ogre::TU_RENDERTARGET);
         target = offscreen_->getBuffer()->getRenderTarget();
         target->setAutoUpdated(true);
@@ -190,7 +191,7 @@ void GameApp::createScene() {
     const double fovY = 2.0 * std::atan(std::tan(degToRad(settings_.fov) * 0.5) / aspect);
     camera_->setFOVy(Ogre::Radian(static_cast<Ogre::Real>(fovY)));
 
-    materials_ = std::make_unique<render::LevelMaterials>(kResourceGroup);
+    materials_ = std::make_unique<render::LevelMaterials>(Ogre::RGN_DEFAULT);
     auto start = std::chrono::steady_clock::now();
     render::applyLevelLighting(*level_);  // before any level material loads: they copy these defaults
     levelGeometry_ = std::make_unique<render::LevelGeometry>(*scene_, *level_, *materials_);
@@ -198,7 +199,7 @@ void GameApp::createScene() {
     // misc_model meshes: rendered, and their triangles become static colliders.
     std::vector<TriangleMesh> modelMeshes;
     for (const auto& m : level_->models)
-        modelMeshes.push_back(render::placeModel(*scene_, m, settings_.level, kResourceGroup, *materials_));
+        modelMeshes.push_back(render::placeModel(*scene_, m, settings_.level, Ogre::RGN_DEFAULT, *materials_));
 
     sim::SimConfig config;
     config.tickRate = settings_.tickRate;
