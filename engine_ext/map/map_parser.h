@@ -1,0 +1,55 @@
+// Parser for Quake `.map` files as TrenchBroom writes them: entities of quoted key/value pairs and
+// brushes of faces, each face either classic Quake
+//   ( x y z ) ( x y z ) ( x y z ) TEXTURE xoff yoff rot xscale yscale
+// or Valve-220 (worldspawn "mapversion" "220")
+//   ( x y z ) ( x y z ) ( x y z ) TEXTURE [ ux uy uz uoff ] [ vx vy vz voff ] rot xscale yscale
+// `//` comments anywhere. Quake 3 `patchDef2`/`brushDef*` blocks are skipped with a warning.
+// Reference: the Quake map format as documented by the Quake Wiki and TrenchBroom's manual.
+#pragma once
+
+#include "map/level.h"
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace obscura::map {
+
+// A malformed map: the message is `file:line:column: problem`.
+struct MapError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct MapFace {
+    Vec3 points[3];  // map units, Quake axes (Z up)
+    std::string texture;
+    bool valve220 = false;
+    Vec3 uAxis, vAxis;  // Valve-220 only
+    double uOffset = 0, vOffset = 0, rotation = 0, uScale = 1, vScale = 1;
+    SourcePos pos;
+};
+
+struct MapBrush {
+    std::vector<MapFace> faces;
+    SourcePos pos;
+};
+
+struct MapEntity {
+    std::vector<std::pair<std::string, std::string>> keys;
+    std::vector<MapBrush> brushes;
+    SourcePos pos;
+    const std::string& value(const std::string& key) const;
+};
+
+struct MapFile {
+    std::string path;
+    std::vector<MapEntity> entities;
+    std::vector<std::string> warnings;
+};
+
+MapFile parseMap(std::string_view text, const std::string& fileName);
+MapFile loadMapFile(const std::string& path);  // throws MapError if unreadable or malformed
+
+}  // namespace obscura::map
