@@ -1,6 +1,7 @@
 // obscura: the game executable. Parses settings, runs the game, and turns every load-time error
 // into one clear line on stderr and a non-zero exit.
 #include "app/game_app.h"
+#include "replay/replay_script.h"
 #include "settings.h"
 
 #include <OgreException.h>
@@ -14,6 +15,9 @@ int main(int argc, char** argv) {
         if (!parser.parse(argc, argv, settings)) return 0;  // --help
         obscura::GameApp app(std::move(settings), parser);
         return app.run();
+    } catch (const obscura::replay::ScriptError& e) {
+        std::cerr << "obscura: replay script error: " << e.what() << "\n";
+        return 2;
     } catch (const obscura::SettingsError& e) {
         std::cerr << "obscura: " << e.what() << "\n";
         return 2;

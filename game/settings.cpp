@@ -109,6 +109,11 @@ struct Option {
     bool isFlag = false;  // may be given without a value on the command line (means true)
 };
 
+// Settings that only make sense before the game starts; a replay's `set` may not change them.
+const char* const kStartupOnly[] = {"level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
+                                    "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
+                                    "timedemo", "config", "data-dir", "log"};
+
 struct SettingsParser::Impl {
     std::vector<Option> options;
     po::options_description desc{"Obscura options"};
@@ -159,6 +164,10 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                s.ticks = static_cast<long>(parseClamped(v, 0, 1e9, where, "ticks"));
            }});
     I.add({"screenshot", "write the last rendered frame to this PNG file", str(&S::screenshot)});
+    I.add({"replay", "play this replay script headless (implies --headless)", str(&S::replay)});
+    I.add({"capture-dir", "folder for a replay's `capture <name>` frames (<name>.png)", str(&S::captureDir)});
+    I.add({"record", "record this session's inputs as a replay script to this file", str(&S::record)});
+    I.add({"timedemo", "play this replay script rendering every tick as fast as possible; print frame times", str(&S::timedemo)});
     I.add({"config", "config file of 'key = value' lines (same names as these options)", str(&S::configFile)});
     I.add({"data-dir", "folder holding media/ and shaders/", str(&S::dataDir)});
     I.add({"log", "OGRE log file (default: obscura.log in the cache folder)", str(&S::logFile)});
@@ -184,6 +193,13 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
 SettingsParser::~SettingsParser() { delete impl_; }
 
 bool SettingsParser::isKnown(const std::string& key) const { return impl_->find(key) != nullptr; }
+
+bool SettingsParser::isRuntime(const std::string& key) const {
+    if (!isKnown(key)) return false;
+    for (const char* k : kStartupOnly)
+        if (key == k) return false;
+    return true;
+}
 
 std::string SettingsParser::help() const {
     std::ostringstream os;

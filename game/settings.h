@@ -44,6 +44,11 @@ struct Settings {
     bool headless = false;
     long ticks = 0;              // 0 = run until quit (windowed) / 300 (headless)
     std::string screenshot;      // PNG written from the last frame
+    // Replays (engine_ext/replay): play a script, record one, or benchmark one
+    std::string replay;          // script to play (implies headless)
+    std::string captureDir = "."; // where `capture <name>` writes <name>.png
+    std::string record;          // write a replay of this session here
+    std::string timedemo;        // play this script as fast as possible and print frame-time statistics
     // Paths
     std::string configFile;
     std::string dataDir;         // holds media/ and shaders/
@@ -68,6 +73,8 @@ public:
     // Applies one `key value` at run time (replay `set`, the menu). Throws SettingsError.
     void apply(const std::string& key, const std::string& value, Settings& s, const std::string& where) const;
     bool isKnown(const std::string& key) const;
+    // Known and changeable while the game runs (not level, resolution, paths...).
+    bool isRuntime(const std::string& key) const;
     std::string help() const;
 
 private:

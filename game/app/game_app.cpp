@@ -3,6 +3,7 @@
 
 #include "app/sdl_keys.h"
 #include "core/fixed_step.h"
+#include "timedemo_stats.h"
 #include "map/map_compile.h"
 #include "render/hud.h"
 #include "render/level_geometry.h"
@@ -10,6 +11,8 @@
 #include "render/level_materials.h"
 #include "render/model_loader.h"
 #include "render/prop_view.h"
+#include "replay/replay_recorder.h"
+#include "replay/replay_script.h"
 #include "sim/simulation.h"
 
 #include <Ogre.h>
@@ -21,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -232,6 +236,10 @@ void GameApp::createScene() {
 }
 
 void GameApp::stepSimulation() {
+    // A recording carries expected hashes once a second of game time, so a diverging playback
+    // names the tick where it first went wrong.
+    if (recorder_ && sim_->tick() > 0 && sim_->tick() % static_cast<std::uint64_t>(settings_.tickRate) == 0)
+        recorder_->hash(static_cast<std::int64_t>(sim_->tick()) - 1, sim_->stateHashHex());
     handleTriggeredActions();
     *previousPlayer_ = sim_->player();
     sim_->step(input_.takeCommand());
@@ -286,12 +294,78 @@ void GameApp::writeScreenshot(const std::string& path) {
     image.save(path);
 }
 
+void GameApp::prepareReplay() {
+    const std::string& path = !settings_.timedemo.empty() ? settings_.timedemo : settings_.replay;
+    if (path.empty()) return;
+    // Every `set` is validated now, against a scratch copy: a bad value fails before the first frame.
+    auto known = [this](const std::string& key) { return parser_.isRuntime(key); };
+    script_ = std::make_unique<replay::Script>(replay::loadScript(path, known));
+    Settings scratch = settings_;
+    for (const auto& c : script_->commands)
+        if (c.type == replay::Command::Type::Set)
+            parser_.apply(c.name, c.value, scratch, script_->fileName + ":" + std::to_string(c.line));
+
+    // The script's header decides the level, seed, resolution and tick rate.
+    namespace fs = std::filesystem;
+    fs::path level = script_->level;
+    if (level.is_relative()) {
+        const fs::path besideScript = fs::path(path).parent_path() / level;
+        level = fs::exists(besideScript) ? besideScript : fs::path(settings_.dataDir) / level;
+    }
+    if (!fs::is_regular_file(level))
+        throw replay::ScriptError(path + ": level '" + script_->level + "' not found");
+    settings_.level = level.string();
+    settings_.seed = script_->seed;
+    settings_.width = script_->width;
+    settings_.height = script_->height;
+    settings_.tickRate = script_->tickRate;
+    settings_.vsync = false;
+    if (settings_.replay.size()) settings_.headless = true;
+
+    if (!settings_.replay.empty()) {
+        // Fail now, not at the first capture, if the folder cannot be written.
+        std::error_code ec;
+        fs::create_directories(settings_.captureDir, ec);
+        const fs::path probe = fs::path(settings_.captureDir) / ".obscura-write-test";
+        std::ofstream(probe.string()) << "";
+        if (ec || !fs::exists(probe))
+            throw std::runtime_error("capture folder '" + settings_.captureDir + "' cannot be written");
+        fs::remove(probe, ec);
+    }
+}
+
+std::string GameApp::rendererDescription() const {
+    const Ogre::RenderSystemCapabilities* caps = mRoot->getRenderSystem()->getCapabilities();
+    std::ostringstream os;
+    os << caps->getDeviceName() << " | " << caps->getRenderSystemName() << " | driver "
+       << caps->getDriverVersion().toString() << " | OGRE " << OGRE_VERSION_MAJOR << "." << OGRE_VERSION_MINOR << "."
+       << OGRE_VERSION_PATCH;
+    return os.str();
+}
+
 int GameApp::run() {
+    prepareReplay();
+    if (!settings_.record.empty())
+        recorder_ = std::make_unique<replay::Recorder>(settings_.level, settings_.seed, settings_.width,
+                                                       settings_.height, settings_.tickRate);
     initApp();
     if (!mRoot || getRenderWindow() == nullptr) throw std::runtime_error("OGRE failed to initialise (see the log)");
     loadLevel();
     createScene();
 
+    const int code = script_ ? runReplay(!settings_.timedemo.empty()) : runLive();
+
+    if (!settings_.screenshot.empty()) {
+        writeScreenshot(settings_.screenshot);
+        std::cout << "screenshot " << settings_.screenshot << "\n";
+    }
+    if (recorder_) writeRecording();
+    std::cout << "state-hash " << sim_->stateHashHex() << "\n";
+    closeApp();
+    return code;
+}
+
+int GameApp::runLive() {
     if (!settings_.headless) {
         mouseGrabbed_ = true;
         setWindowGrab(true);
@@ -318,43 +392,145 @@ int GameApp::run() {
         if (mRoot->endRenderingQueued()) quit_ = true;
         if (settings_.ticks > 0 && static_cast<long>(sim_->tick()) >= settings_.ticks) quit_ = true;
     }
-
-    if (!settings_.screenshot.empty()) {
-        writeScreenshot(settings_.screenshot);
-        std::cout << "screenshot " << settings_.screenshot << "\n";
-    }
-    std::cout << "state-hash " << sim_->stateHashHex() << "\n";
-    closeApp();
     return 0;
+}
+
+int GameApp::runReplay(bool timed) {
+    std::cout << "renderer " << rendererDescription() << "\n";
+    ReplayPlayer player(*script_);
+    std::vector<double> frameMs;
+    const double fixedMs = 1000.0 / settings_.tickRate;
+    double lastMs = fixedMs;
+    bool diverged = false;
+    for (std::int64_t t = 0; t <= player.lastTick() && !quit_; ++t) {
+        const auto start = std::chrono::steady_clock::now();
+        const ReplayTick due = player.take(t);
+        for (const auto* c : due.settings) applySetting(c->name, c->value, script_->fileName + ":" + std::to_string(c->line));
+        for (const auto& in : due.inputs) injectInput(in);
+        pollEvents();
+        stepSimulation();
+        updateView(1.0);
+        // Captures show the fixed tick time, so the same replay gives the same pixels.
+        renderFrame(timed ? lastMs : fixedMs);
+        for (const auto* c : due.captures) writeCapture(c->name);
+        for (const auto* c : due.hashes) {
+            const std::string hex = sim_->stateHashHex();
+            std::cout << "hash " << t << " " << hex << "\n";
+            if (!c->value.empty() && c->value != hex && !diverged) {
+                diverged = true;
+                std::cerr << script_->fileName << ":" << c->line << ": replay diverged at tick " << t << ": expected "
+                          << c->value << ", got " << hex << "\n";
+            }
+        }
+        lastMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        frameMs.push_back(lastMs);
+    }
+    if (timed) std::cout << formatFrameStats(computeFrameStats(frameMs), script_->fileName);
+    return diverged ? 3 : 0;
+}
+
+void GameApp::applySetting(const std::string& key, const std::string& value, const std::string& where) {
+    parser_.apply(key, value, settings_, where);  // validated at load time, so this does not throw
+    if (key == "fov") {
+        const double aspect = camera_->getAspectRatio();
+        camera_->setFOVy(Ogre::Radian(static_cast<Ogre::Real>(2.0 * std::atan(std::tan(degToRad(settings_.fov) * 0.5) / aspect))));
+    } else if (key == "debug-panel") {
+        hud_->setPanelVisible(settings_.showDebugPanel);
+    }
+}
+
+void GameApp::injectInput(const ReplayInput& in) {
+    // Real SDL events, addressed to our window: they reach keyPressed() etc. through OgreBites
+    // exactly as a keyboard's would.
+    SDL_Event e{};
+    const Uint32 window = SDL_GetWindowID(mWindows.front().native);
+    const bool down = in.kind == ReplayInput::Kind::KeyDown;
+    if (in.kind == ReplayInput::Kind::MouseMotion) {
+        e.type = SDL_MOUSEMOTION;
+        e.motion.windowID = window;
+        e.motion.xrel = in.dx;
+        e.motion.yrel = in.dy;
+    } else if (in.key.rfind("mouse", 0) == 0) {
+        e.type = down ? SDL_MOUSEBUTTONDOWN : SDL_MOUSEBUTTONUP;
+        e.button.windowID = window;
+        e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
+        e.button.button = in.key == "mouse1" ? SDL_BUTTON_LEFT : in.key == "mouse2" ? SDL_BUTTON_RIGHT : SDL_BUTTON_MIDDLE;
+    } else {
+        e.type = down ? SDL_KEYDOWN : SDL_KEYUP;
+        e.key.windowID = window;
+        e.key.state = down ? SDL_PRESSED : SDL_RELEASED;
+        e.key.keysym.sym = keycodeFromKeyName(in.key).value_or(0);
+        e.key.keysym.scancode = static_cast<SDL_Scancode>(scancodeFromKeyName(in.key).value_or(0));
+    }
+    SDL_PushEvent(&e);
+}
+
+void GameApp::writeCapture(const std::string& name) {
+    // Write beside, then rename: a capture is never left half-written.
+    namespace fs = std::filesystem;
+    const fs::path final = fs::path(settings_.captureDir) / (name + ".png");
+    const fs::path partial = fs::path(settings_.captureDir) / (name + ".partial.png");
+    writeScreenshot(partial.string());
+    fs::rename(partial, final);
+    std::cout << "capture " << name << " " << final.string() << "\n";
+}
+
+void GameApp::writeRecording() {
+    // Expected hashes every second of game time let playback name the first diverging tick.
+    recorder_->hash(static_cast<std::int64_t>(sim_->tick()) - 1, sim_->stateHashHex());
+    recorder_->end(static_cast<std::int64_t>(sim_->tick()) - 1);
+    const std::string tmp = settings_.record + ".partial";
+    {
+        std::ofstream out(tmp);
+        out << replay::formatScript(recorder_->script());
+        if (!out) throw std::runtime_error("cannot write recording '" + settings_.record + "'");
+    }
+    std::filesystem::rename(tmp, settings_.record);
+    std::cout << "recorded " << settings_.record << "\n";
 }
 
 bool GameApp::keyPressed(const OgreBites::KeyboardEvent& evt) {
     if (evt.repeat) return true;
     const std::string name = keyNameFromKeycode(evt.keysym.sym);
-    if (!name.empty()) input_.press(name);
+    if (!name.empty()) {
+        input_.press(name);
+        if (recorder_) recorder_->keyDown(static_cast<std::int64_t>(sim_->tick()), name);
+    }
     return true;
 }
 
 bool GameApp::keyReleased(const OgreBites::KeyboardEvent& evt) {
     const std::string name = keyNameFromKeycode(evt.keysym.sym);
-    if (!name.empty()) input_.release(name);
+    if (!name.empty()) {
+        input_.release(name);
+        if (recorder_) recorder_->keyUp(static_cast<std::int64_t>(sim_->tick()), name);
+    }
     return true;
 }
 
 bool GameApp::mouseMoved(const OgreBites::MouseMotionEvent& evt) {
-    if (mouseGrabbed_ || settings_.headless) input_.mouseMotion(evt.xrel, evt.yrel);
+    if (mouseGrabbed_ || settings_.headless) {
+        input_.mouseMotion(evt.xrel, evt.yrel);
+        if (recorder_) recorder_->mouse(static_cast<std::int64_t>(sim_->tick()), evt.xrel, evt.yrel);
+    }
     return true;
 }
 
 bool GameApp::mousePressed(const OgreBites::MouseButtonEvent& evt) {
     const std::string name = keyNameFromMouseButton(evt.button);
-    if (!name.empty()) input_.press(name);
+    if (!name.empty()) {
+        input_.press(name);
+        if (recorder_) recorder_->keyDown(static_cast<std::int64_t>(sim_->tick()), name);
+    }
     return true;
 }
 
 bool GameApp::mouseReleased(const OgreBites::MouseButtonEvent& evt) {
     const std::string name = keyNameFromMouseButton(evt.button);
-    if (!name.empty()) input_.release(name);
+    if (!name.empty()) {
+        input_.release(name);
+        if (recorder_) recorder_->keyUp(static_cast<std::int64_t>(sim_->tick()), name);
+    }
     return true;
 }
 

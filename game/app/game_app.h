@@ -4,6 +4,7 @@
 #pragma once
 
 #include "input.h"
+#include "replay_player.h"
 #include "settings.h"
 
 #include <OgreApplicationContext.h>
@@ -24,6 +25,7 @@ namespace obscura {
 namespace map { struct Level; }
 namespace sim { class Simulation; struct PlayerState; }
 namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; }
+namespace replay { struct Script; class Recorder; }
 
 class GameApp : public OgreBites::ApplicationContext, public OgreBites::InputListener {
 public:
@@ -49,6 +51,14 @@ protected:
     bool mouseReleased(const OgreBites::MouseButtonEvent& evt) override;
 
 private:
+    void prepareReplay();
+    int runLive();
+    int runReplay(bool timed);
+    void injectInput(const ReplayInput& in);
+    void applySetting(const std::string& key, const std::string& value, const std::string& where);
+    void writeCapture(const std::string& name);
+    void writeRecording();
+    std::string rendererDescription() const;
     void loadLevel();
     void createScene();
     void stepSimulation();
@@ -75,6 +85,9 @@ private:
     std::unique_ptr<render::LevelGeometry> levelGeometry_;
     std::unique_ptr<render::PropView> props_;
     std::unique_ptr<render::Hud> hud_;
+
+    std::unique_ptr<replay::Script> script_;      // --replay / --timedemo
+    std::unique_ptr<replay::Recorder> recorder_;  // --record
 
     bool quit_ = false;
     bool mouseGrabbed_ = false;

@@ -1,0 +1,49 @@
+// See replay_player.h.
+#include "replay_player.h"
+
+namespace obscura {
+
+namespace {
+// Mouse buttons in scripts are left/right/middle; the bindings call them mouse1/mouse2/mouse3.
+std::string buttonKey(const std::string& name) {
+    if (name == "left") return "mouse1";
+    if (name == "right") return "mouse2";
+    return "mouse3";
+}
+}  // namespace
+
+ReplayPlayer::ReplayPlayer(const replay::Script& script) : script_(script), lastTick_(script.endTick()) {}
+
+ReplayTick ReplayPlayer::take(std::int64_t tick) {
+    ReplayTick out;
+    for (auto it = pending_.begin(); it != pending_.end() && it->first <= tick;) {
+        out.inputs.push_back(it->second);
+        it = pending_.erase(it);
+    }
+    using T = replay::Command::Type;
+    using A = replay::Command::Action;
+    for (; next_ < script_.commands.size() && script_.commands[next_].tick <= tick; ++next_) {
+        const replay::Command& c = script_.commands[next_];
+        switch (c.type) {
+            case T::Key:
+            case T::Button: {
+                const std::string key = c.type == T::Key ? c.name : buttonKey(c.name);
+                if (c.action == A::Up) {
+                    out.inputs.push_back({ReplayInput::Kind::KeyUp, key, 0, 0});
+                } else {
+                    out.inputs.push_back({ReplayInput::Kind::KeyDown, key, 0, 0});
+                    if (c.action == A::Tap) pending_.insert({tick + 1, {ReplayInput::Kind::KeyUp, key, 0, 0}});
+                }
+                break;
+            }
+            case T::Mouse: out.inputs.push_back({ReplayInput::Kind::MouseMotion, {}, c.dx, c.dy}); break;
+            case T::Set: out.settings.push_back(&c); break;
+            case T::Capture: out.captures.push_back(&c); break;
+            case T::Hash: out.hashes.push_back(&c); break;
+            case T::End: break;
+        }
+    }
+    return out;
+}
+
+}  // namespace obscura
