@@ -1,0 +1,59 @@
+// The game simulation: the Bullet world built from a compiled level, the player, props and the
+// seeded RNG, advanced one fixed tick at a time from player commands. It never reads render
+// state; the game reads it (player state, body poses) and pushes it to rendering.
+#pragma once
+
+#include "core/rng.h"
+#include "core/triangle_mesh.h"
+#include "map/level.h"
+#include "sim/physics_world.h"
+#include "sim/player_controller.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace obscura::sim {
+
+using obscura::TriangleMesh;
+
+struct SimConfig {
+    double tickRate = 60;  // ticks per second
+    std::uint64_t seed = 1;
+};
+
+struct BodyPose {
+    Vec3 position;
+    double qx = 0, qy = 0, qz = 0, qw = 1;
+    Vec3 halfExtents;
+};
+
+class Simulation {
+public:
+    // modelMeshes: world-space triangles of the level's misc_models (static colliders).
+    Simulation(const map::Level& level, const SimConfig& config, const std::vector<TriangleMesh>& modelMeshes = {});
+
+    void step(const PlayerCommand& cmd);
+
+    std::uint64_t tick() const { return tick_; }
+    double dt() const { return 1.0 / config_.tickRate; }
+    const PlayerState& player() const { return player_; }
+    Rng& rng() { return rng_; }
+    PhysicsWorld& physics() { return *physics_; }
+    std::vector<BodyPose> bodyPoses() const;
+
+    // Hash of everything that evolves: tick, player, every dynamic body, the RNG.
+    std::uint64_t stateHash() const;
+    std::string stateHashHex() const;
+
+private:
+    SimConfig config_;
+    std::unique_ptr<PhysicsWorld> physics_;
+    std::unique_ptr<PlayerController> controller_;
+    PlayerState player_;
+    Rng rng_;
+    std::uint64_t tick_ = 0;
+};
+
+}  // namespace obscura::sim

@@ -1,0 +1,40 @@
+// Hand-built levels for the simulation tests: boxes and wedges as solid brushes (hull points only).
+#pragma once
+
+#include "map/level.h"
+
+#include <cmath>
+
+namespace obscura::sim::testlevels {
+
+inline map::LevelBrush box(Vec3 min, Vec3 max) {
+    map::LevelBrush b;
+    for (int i = 0; i < 8; ++i)
+        b.hullPoints.push_back({i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z});
+    b.bounds.extend(min);
+    b.bounds.extend(max);
+    return b;
+}
+
+// A ramp rising towards -Z: from z = z0 (height 0) to z = z0 - run (height rise), x in [x0, x1].
+inline map::LevelBrush ramp(double x0, double x1, double z0, double run, double rise) {
+    map::LevelBrush b;
+    b.hullPoints = {{x0, 0, z0}, {x1, 0, z0}, {x0, 0, z0 - run}, {x1, 0, z0 - run},
+                    {x0, rise, z0 - run}, {x1, rise, z0 - run}};
+    b.bounds.extend({x0, 0, z0 - run});
+    b.bounds.extend({x1, rise, z0});
+    return b;
+}
+
+// A 40 x 40 m floor slab whose top is at y = 0, the player at the origin facing -Z.
+inline map::Level floorLevel() {
+    map::Level l;
+    l.entities.push_back({});
+    l.entities[0].classname = "worldspawn";
+    l.brushes.push_back(box({-20, -1, -20}, {20, 0, 20}));
+    l.hasPlayerStart = true;
+    l.playerStart = {0, 0, 0};
+    return l;
+}
+
+}  // namespace obscura::sim::testlevels
