@@ -1,6 +1,8 @@
 // Settings table, parsing and validation. See settings.h.
 #include "settings.h"
 
+#include "replay/replay_script.h"
+
 #include <boost/program_options.hpp>
 
 #include <cerrno>
@@ -21,15 +23,10 @@ const char* const kActionNames[] = {"forward", "back", "left", "right", "jump", 
                                     "screenshot", "menu"};
 static_assert(sizeof(kActionNames) / sizeof(kActionNames[0]) == static_cast<size_t>(Action::Count));
 
+// The replay scripts' key names plus the mouse buttons.
 std::vector<std::string> makeKeyNames() {
-    std::vector<std::string> k;
-    for (char c = 'a'; c <= 'z'; ++c) k.emplace_back(1, c);
-    for (char c = '0'; c <= '9'; ++c) k.emplace_back(1, c);
-    for (const char* n : {"space", "return", "escape", "tab", "backspace", "lshift", "rshift", "lctrl", "rctrl",
-                          "lalt", "ralt", "up", "down", "left", "right", "minus", "equals", "comma", "period",
-                          "slash", "grave", "mouse1", "mouse2", "mouse3"})
-        k.emplace_back(n);
-    for (int i = 1; i <= 12; ++i) k.push_back("f" + std::to_string(i));
+    std::vector<std::string> k = replay::keyNames();
+    for (const char* n : {"mouse1", "mouse2", "mouse3"}) k.emplace_back(n);
     return k;
 }
 
@@ -249,7 +246,10 @@ bool SettingsParser::parse(int argc, const char* const argv[], Settings& out) {
     }
     for (const auto& opt : parsed.options) {
         if (opt.string_key == "help") continue;
-        apply(opt.string_key, opt.value.empty() ? std::string() : opt.value.front(), out, "command line");
+        // A flag given bare (--headless) arrives with no value: its implicit value is true.
+        const Option* o = impl_->find(opt.string_key);
+        const std::string value = opt.value.empty() ? (o && o->isFlag ? "true" : "") : opt.value.front();
+        apply(opt.string_key, value, out, "command line");
     }
     return true;
 }

@@ -287,7 +287,8 @@ void GameApp::renderFrame(double frameMs) {
 }
 
 void GameApp::writeScreenshot(const std::string& path) {
-    Ogre::RenderTarget* target = offscreen_ ? offscreen_->getBuffer()->getRenderTarget() : getRenderWindow();
+    Ogre::RenderTarget* target = getRenderWindow();
+    if (offscreen_) target = offscreen_->getBuffer()->getRenderTarget();
     const auto w = target->getWidth(), h = target->getHeight();
     Ogre::Image image(Ogre::PF_BYTE_RGB, w, h);
     target->copyContentsToMemory(image.getPixelBox(), image.getPixelBox());

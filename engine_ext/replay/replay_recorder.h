@@ -1,0 +1,31 @@
+// Builds a replay script from a live session: key and button presses/releases and mouse motion
+// by tick (several motions in one tick merge into one line), plus expected hashes so a playback
+// names the first tick where it diverges. Commands may arrive slightly out of tick order (a hash
+// for tick t is taken while inputs for t + 1 are already recorded); script() orders them stably.
+#pragma once
+
+#include "replay/replay_script.h"
+
+namespace obscura::replay {
+
+class Recorder {
+public:
+    Recorder(std::string level, std::uint64_t seed, int width, int height, double tickRate);
+
+    // `key` is a key name, or mouse1/mouse2/mouse3 for the left/right/middle buttons.
+    void keyDown(std::int64_t tick, const std::string& key);
+    void keyUp(std::int64_t tick, const std::string& key);
+    void mouse(std::int64_t tick, int dx, int dy);
+    void capture(std::int64_t tick, const std::string& name);
+    void hash(std::int64_t tick, const std::string& expected = {});
+    void end(std::int64_t tick);
+
+    Script script() const;
+
+private:
+    void key(std::int64_t tick, const std::string& key, Command::Action action);
+    Script script_;
+    int mouseIndex_ = -1;  // the mouse command of the latest tick, to merge into
+};
+
+}  // namespace obscura::replay

@@ -1,0 +1,243 @@
+// See replay_script.h.
+#include "replay/replay_script.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace obscura::replay {
+
+namespace {
+constexpr int kVersion = 1;
+
+std::vector<std::string> split(const std::string& line) {
+    std::istringstream is(line);
+    std::vector<std::string> out;
+    std::string w;
+    while (is >> w) out.push_back(w);
+    return out;
+}
+
+class Parser {
+public:
+    Parser(const std::string& file, const std::function<bool(const std::string&)>& known) : file_(file), known_(known) {}
+
+    [[noreturn]] void fail(const std::string& problem) const {
+        throw ScriptError(file_ + ":" + std::to_string(line_) + ": " + problem);
+    }
+
+    std::int64_t integer(const std::string& s, const char* what, std::int64_t lo, std::int64_t hi) const {
+        errno = 0;
+        char* end = nullptr;
+        const long long v = std::strtoll(s.c_str(), &end, 10);
+        if (s.empty() || *end || errno == ERANGE) fail("'" + s + "' is not an integer, expected " + what);
+        if (v < lo || v > hi) fail(std::string(what) + " " + s + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        return v;
+    }
+
+    void arity(const std::vector<std::string>& w, std::size_t n, const char* usage) const {
+        if (w.size() != n) fail(std::string(w.size() < n ? "missing arguments" : "extra arguments") + ", expected '" + usage + "'");
+    }
+
+    Command::Action action(const std::string& s) const {
+        if (s == "down") return Command::Action::Down;
+        if (s == "up") return Command::Action::Up;
+        if (s == "tap") return Command::Action::Tap;
+        fail("unknown action '" + s + "', expected down, up or tap");
+    }
+
+    void header(Script& s, const std::vector<std::string>& w) {
+        if (w[0] == "level") {
+            if (w.size() < 2) fail("missing path, expected 'level <path>'");
+            std::string path = w[1];
+            for (std::size_t i = 2; i < w.size(); ++i) path += " " + w[i];
+            s.level = path;
+        } else if (w[0] == "seed") {
+            arity(w, 2, "seed <unsigned integer>");
+            errno = 0;
+            char* end = nullptr;
+            const unsigned long long v = std::strtoull(w[1].c_str(), &end, 0);
+            if (*end || errno == ERANGE || w[1][0] == '-') fail("'" + w[1] + "' is not an unsigned integer, expected a seed");
+            s.seed = v;
+        } else if (w[0] == "resolution") {
+            arity(w, 3, "resolution <width> <height>");
+            s.width = static_cast<int>(integer(w[1], "a width", 16, 8192));
+            s.height = static_cast<int>(integer(w[2], "a height", 16, 8192));
+        } else if (w[0] == "tickrate") {
+            arity(w, 2, "tickrate <ticks per second>");
+            s.tickRate = static_cast<double>(integer(w[1], "a tick rate", 10, 240));
+        } else {
+            fail("unknown header '" + w[0] + "', expected level, seed, resolution, tickrate or '<tick> <command>'");
+        }
+    }
+
+    Command command(const std::vector<std::string>& w, std::int64_t tick) {
+        Command c;
+        c.tick = tick;
+        c.line = line_;
+        const std::string& cmd = w[1];
+        if (cmd == "key") {
+            arity(w, 4, "<tick> key <name> down|up|tap");
+            const auto& k = keyNames();
+            if (std::find(k.begin(), k.end(), w[2]) == k.end()) fail("unknown key '" + w[2] + "', expected a key name such as w, space, lshift, f1");
+            c.type = Command::Type::Key;
+            c.name = w[2];
+            c.action = action(w[3]);
+        } else if (cmd == "mouse") {
+            arity(w, 4, "<tick> mouse <dx> <dy>");
+            c.type = Command::Type::Mouse;
+            c.dx = static_cast<int>(integer(w[2], "a mouse dx", -100000, 100000));
+            c.dy = static_cast<int>(integer(w[3], "a mouse dy", -100000, 100000));
+        } else if (cmd == "button") {
+            arity(w, 4, "<tick> button left|right|middle down|up|tap");
+            if (w[2] != "left" && w[2] != "right" && w[2] != "middle") fail("unknown button '" + w[2] + "', expected left, right or middle");
+            c.type = Command::Type::Button;
+            c.name = w[2];
+            c.action = action(w[3]);
+        } else if (cmd == "capture") {
+            arity(w, 3, "<tick> capture <name>");
+            const bool ok = std::all_of(w[2].begin(), w[2].end(), [](char ch) {
+                return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
+            });
+            if (!ok) fail("bad capture name '" + w[2] + "', expected letters, digits, '_' and '-'");
+            if (!captures_.insert(w[2]).second) fail("duplicate capture name '" + w[2] + "'");
+            c.type = Command::Type::Capture;
+            c.name = w[2];
+        } else if (cmd == "set") {
+            if (w.size() < 4) fail("missing arguments, expected '<tick> set <setting> <value>'");
+            if (known_ && !known_(w[2])) fail("unknown setting '" + w[2] + "', expected a setting `obscura --help` lists that can change at run time");
+            c.type = Command::Type::Set;
+            c.name = w[2];
+            c.value = w[3];
+            for (std::size_t i = 4; i < w.size(); ++i) c.value += " " + w[i];
+        } else if (cmd == "hash") {
+            if (w.size() > 3) fail("extra arguments, expected '<tick> hash [<expected hash>]'");
+            c.type = Command::Type::Hash;
+            if (w.size() == 3) {
+                const bool hex = w[2].size() == 16 && std::all_of(w[2].begin(), w[2].end(), [](char ch) {
+                                     return std::isdigit(static_cast<unsigned char>(ch)) || (ch >= 'a' && ch <= 'f');
+                                 });
+                if (!hex) fail("bad expected hash '" + w[2] + "', expected 16 lower-case hex digits");
+                c.value = w[2];
+            }
+        } else if (cmd == "end") {
+            arity(w, 2, "<tick> end");
+            c.type = Command::Type::End;
+        } else {
+            fail("unknown command '" + cmd + "', expected one of key, mouse, button, capture, set, hash, end");
+        }
+        return c;
+    }
+
+    Script parse(std::string_view text) {
+        Script s;
+        s.fileName = file_;
+        std::istringstream in{std::string(text)};
+        std::string raw;
+        bool sawVersion = false, ended = false;
+        std::int64_t lastTick = 0;
+        int lastTickLine = 0;
+        while (std::getline(in, raw)) {
+            ++line_;
+            const auto hash = raw.find('#');
+            if (hash != std::string::npos) raw.resize(hash);
+            const auto w = split(raw);
+            if (w.empty()) continue;
+            if (!sawVersion) {
+                if (w[0] != "obscura-replay") fail("expected the header 'obscura-replay " + std::to_string(kVersion) + "' first");
+                arity(w, 2, "obscura-replay <version>");
+                s.version = static_cast<int>(integer(w[1], "a version", 0, 1000000));
+                if (s.version != kVersion) fail("unsupported version " + w[1] + ", expected " + std::to_string(kVersion));
+                sawVersion = true;
+                continue;
+            }
+            if (ended) fail("'" + w[0] + "' after 'end', expected nothing");
+            const bool isTick = std::isdigit(static_cast<unsigned char>(w[0][0])) || w[0][0] == '-';
+            if (!isTick) {
+                if (!s.commands.empty()) fail("header '" + w[0] + "' after the first command, expected '<tick> <command>'");
+                header(s, w);
+                continue;
+            }
+            if (s.level.empty()) fail("the header has no 'level <path>' line before the first command");
+            if (w.size() < 2) fail("missing command after tick, expected '<tick> <command>'");
+            const std::int64_t tick = integer(w[0], "a tick", 0, 1000000000);
+            if (tick < lastTick) fail("tick " + w[0] + " is before tick " + std::to_string(lastTick) + " of line " + std::to_string(lastTickLine));
+            lastTick = tick;
+            lastTickLine = line_;
+            s.commands.push_back(command(w, tick));
+            ended = s.commands.back().type == Command::Type::End;
+        }
+        if (!sawVersion) {
+            line_ = std::max(line_, 1);
+            fail("empty script, expected the header 'obscura-replay " + std::to_string(kVersion) + "'");
+        }
+        if (s.level.empty()) fail("the header has no 'level <path>' line");
+        return s;
+    }
+
+private:
+    const std::string& file_;
+    const std::function<bool(const std::string&)>& known_;
+    int line_ = 0;
+    std::set<std::string> captures_;
+};
+
+const char* actionName(Command::Action a) {
+    return a == Command::Action::Down ? "down" : a == Command::Action::Up ? "up" : "tap";
+}
+}  // namespace
+
+std::int64_t Script::endTick() const { return commands.empty() ? 0 : commands.back().tick; }
+
+const std::vector<std::string>& keyNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> k;
+        for (char c = 'a'; c <= 'z'; ++c) k.emplace_back(1, c);
+        for (char c = '0'; c <= '9'; ++c) k.emplace_back(1, c);
+        for (const char* n : {"space", "return", "escape", "tab", "backspace", "lshift", "rshift", "lctrl", "rctrl",
+                              "lalt", "ralt", "up", "down", "left", "right", "minus", "equals", "comma", "period",
+                              "slash", "grave"})
+            k.emplace_back(n);
+        for (int i = 1; i <= 12; ++i) k.push_back("f" + std::to_string(i));
+        return k;
+    }();
+    return names;
+}
+
+Script parseScript(std::string_view text, const std::string& fileName, const std::function<bool(const std::string&)>& isKnownSetting) {
+    return Parser(fileName, isKnownSetting).parse(text);
+}
+
+Script loadScript(const std::string& path, const std::function<bool(const std::string&)>& isKnownSetting) {
+    std::ifstream in(path);
+    if (!in) throw ScriptError(path + ": cannot open replay script");
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parseScript(ss.str(), path, isKnownSetting);
+}
+
+std::string formatScript(const Script& s) {
+    std::ostringstream o;
+    o << "obscura-replay " << kVersion << "\n";
+    o << "level " << s.level << "\nseed " << s.seed << "\nresolution " << s.width << " " << s.height << "\n";
+    o << "tickrate " << s.tickRate << "\n";
+    for (const auto& c : s.commands) {
+        o << c.tick << " ";
+        switch (c.type) {
+            case Command::Type::Key: o << "key " << c.name << " " << actionName(c.action); break;
+            case Command::Type::Mouse: o << "mouse " << c.dx << " " << c.dy; break;
+            case Command::Type::Button: o << "button " << c.name << " " << actionName(c.action); break;
+            case Command::Type::Capture: o << "capture " << c.name; break;
+            case Command::Type::Set: o << "set " << c.name << " " << c.value; break;
+            case Command::Type::Hash: o << "hash" << (c.value.empty() ? "" : " " + c.value); break;
+            case Command::Type::End: o << "end"; break;
+        }
+        o << "\n";
+    }
+    return o.str();
+}
+
+}  // namespace obscura::replay

@@ -1,0 +1,72 @@
+// Replay scripts, format version 1: a versioned text format, one command a line.
+//
+//   # comment (also after a command)
+//   obscura-replay 1            first non-comment line
+//   level media/levels/arena.map
+//   seed 12345
+//   resolution 640 360
+//   tickrate 60                 optional, default 60
+//   <tick> key <name> down|up|tap
+//   <tick> mouse <dx> <dy>      relative motion in counts
+//   <tick> button left|right|middle down|up|tap
+//   <tick> capture <name>       [A-Za-z0-9_-]+, unique
+//   <tick> set <setting> <value...>
+//   <tick> hash [<expected 16-hex-digit hash>]
+//   <tick> end                  optional; nothing may follow
+//
+// Ticks are non-negative and non-decreasing. Errors name file:line and what was expected.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace obscura::replay {
+
+struct ScriptError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct Command {
+    enum class Type { Key, Mouse, Button, Capture, Set, Hash, End };
+    enum class Action { Down, Up, Tap };
+    std::int64_t tick = 0;
+    Type type = Type::End;
+    std::string name;   // key, button (left/right/middle), capture or setting name
+    std::string value;  // set: the value; hash: the expected hash (may be empty)
+    Action action = Action::Down;
+    int dx = 0, dy = 0;
+    int line = 0;
+
+    bool operator==(const Command& o) const {
+        return tick == o.tick && type == o.type && name == o.name && value == o.value && action == o.action &&
+               dx == o.dx && dy == o.dy;
+    }
+};
+
+struct Script {
+    std::string fileName;
+    int version = 1;
+    std::string level;
+    std::uint64_t seed = 1;
+    int width = 640, height = 360;
+    double tickRate = 60;
+    std::vector<Command> commands;
+
+    // The last tick to simulate: the `end` command's, else the last command's.
+    std::int64_t endTick() const;
+};
+
+// Key names scripts accept (the same as the game's bindings).
+const std::vector<std::string>& keyNames();
+
+Script parseScript(std::string_view text, const std::string& fileName,
+                   const std::function<bool(const std::string&)>& isKnownSetting = {});
+Script loadScript(const std::string& path, const std::function<bool(const std::string&)>& isKnownSetting = {});
+// Writes a script back in canonical form: parseScript(formatScript(s)) has the same commands.
+std::string formatScript(const Script& s);
+
+}  // namespace obscura::replay

@@ -1,0 +1,219 @@
+#!/usr/bin/python3
+"""Generates media/levels/arena.map, Obscura's default level, as a Valve-220 Quake map.
+
+Run: /usr/bin/python3 tools/levelgen/make_arena.py > media/levels/arena.map
+Everything below is in metres (Quake axes: x east, y north, z up); the writer converts to map
+units at 32 units per metre. See media/levels/README.md for the plan.
+"""
+import sys
+
+UNITS = 32  # map units per metre (worldspawn "units_per_metre")
+
+brushes = []   # (list of face lines)
+entities = []  # (dict, list of brushes)
+
+
+def u(m):
+    """Metres -> map units (integers: every coordinate here is a multiple of 1/32 m)."""
+    v = round(m * UNITS)
+    assert abs(v - m * UNITS) < 1e-6, f"{m} m is not on the 1/32 m grid"
+    return v
+
+
+def axes(normal):
+    """Texture axes by face orientation (as TrenchBroom's defaults)."""
+    if normal in ("+z", "-z"):
+        return "[ 1 0 0 0 ] [ 0 -1 0 0 ]"
+    if normal in ("+x", "-x"):
+        return "[ 0 1 0 0 ] [ 0 0 -1 0 ]"
+    return "[ 1 0 0 0 ] [ 0 0 -1 0 ]"
+
+
+def face(p1, p2, p3, tex, normal):
+    pts = " ".join(f"( {u(a)} {u(b)} {u(c)} )" for a, b, c in (p1, p2, p3))
+    return f"{pts} {tex} {axes(normal)} 0 1 1"
+
+
+def box(x0, y0, z0, x1, y1, z1, tex, top=None, bottom=None):
+    """An axis-aligned box; the three points of each face wind so the normal points out."""
+    assert x1 > x0 and y1 > y0 and z1 > z0, (x0, y0, z0, x1, y1, z1)
+    e = 1.0 / UNITS
+    top = top or tex
+    bottom = bottom or tex
+    return [
+        face((x0, y0, z0), (x0, y0 + e, z0), (x0, y0, z0 + e), tex, "-x"),
+        face((x0, y0, z0), (x0, y0, z0 + e), (x0 + e, y0, z0), tex, "-y"),
+        face((x0, y0, z0), (x0 + e, y0, z0), (x0, y0 + e, z0), bottom, "-z"),
+        face((x1, y1, z1), (x1, y1 + e, z1), (x1 + e, y1, z1), top, "+z"),
+        face((x1, y1, z1), (x1 + e, y1, z1), (x1, y1, z1 + e), tex, "+y"),
+        face((x1, y1, z1), (x1, y1, z1 + e), (x1, y1 + e, z1), tex, "+x"),
+    ]
+
+
+def ramp_x(x0, x1, y0, y1, zb, z0, z1, tex):
+    """A ramp rising along +x from height z0 at x0 to z1 at x1 (bottom at zb)."""
+    faces = box(x0, y0, zb, x1, y1, z1, tex)
+    # Slope plane through (x0, y0, z0), (x0, y1, z0), (x1, y0, z1); normal up and towards -x.
+    faces.append(face((x0, y0, z0), (x0, y1, z0), (x1, y0, z1), tex, "+z"))
+    return faces
+
+
+def add(b):
+    brushes.append(b)
+
+
+def stairs_y(x0, x1, y0, z0, steps, rise, run, tex):
+    """Steps climbing towards +y from (y0, z0): each `rise` high and `run` deep."""
+    for i in range(steps):
+        add(box(x0, y0 + i * run, z0, x1, y0 + (i + 1) * run, z0 + (i + 1) * rise, tex))
+
+
+def wall_with_doors(axis, fixed, a0, a1, z0, z1, thick, tex, doors):
+    """A wall along `axis` ('x' or 'y') from a0 to a1 at `fixed` (its inner face), `thick` metres
+    thick outwards (sign of thick says which side), split around doors [(start, width, height)]."""
+    cuts = sorted(doors)
+    segs, pos = [], a0
+    for start, width, height in cuts:
+        if start > pos:
+            segs.append((pos, start, z0, z1))
+        segs.append((start, start + width, z0 + height, z1))  # lintel
+        pos = start + width
+    if pos < a1:
+        segs.append((pos, a1, z0, z1))
+    f0, f1 = sorted((fixed, fixed + thick))
+    for s0, s1, zb, zt in segs:
+        if zt - zb <= 0 or s1 - s0 <= 0:
+            continue
+        if axis == "x":
+            add(box(s0, f0, zb, s1, f1, zt, tex))
+        else:
+            add(box(f0, s0, zb, f1, s1, zt, tex))
+
+
+def room(x0, y0, x1, y1, height, wall, floor, ceiling, doors=None, t=0.5):
+    """An enclosed room: floor slab, four walls (doors per side: 'n','s','e','w'), ceiling."""
+    doors = doors or {}
+    add(box(x0 - t, y0 - t, -0.5, x1 + t, y1 + t, 0, "concrete", top=floor))
+    wall_with_doors("x", y0, x0 - t, x1 + t, 0, height, -t, wall, doors.get("s", []))
+    wall_with_doors("x", y1, x0 - t, x1 + t, 0, height, t, wall, doors.get("n", []))
+    wall_with_doors("y", x0, y0, y1, 0, height, -t, wall, doors.get("w", []))
+    wall_with_doors("y", x1, y0, y1, 0, height, t, wall, doors.get("e", []))
+    if ceiling:
+        add(box(x0 - t, y0 - t, height, x1 + t, y1 + t, height + t, ceiling))
+
+
+def entity(classname, **keys):
+    d = {"classname": classname}
+    for k, v in keys.items():
+        d[k.replace("__", "_").lstrip("_") if not k.startswith("_") else k] = v
+    entities.append(d)
+
+
+def point(x, y, z):
+    return f"{u(x)} {u(y)} {u(z)}"
+
+
+DOOR_W, DOOR_H = 1.5, 2.25  # doorway 1.5 m wide, 2.25 m high (the player is 1.8 m)
+
+# --- Courtyard: 24 x 24 m, open to the sky, 12 m brick walls. The east wall's inner face is the
+# free wall for the back-lit sign.
+CX0, CY0, CX1, CY1 = 20, 20, 44, 44
+add(box(CX0 - 0.5, CY0 - 0.5, -0.5, CX1 + 0.5, CY1 + 0.5, 0, "concrete", top="stone"))
+wall_with_doors("x", CY0, CX0 - 0.5, CX1 + 0.5, 0, 12, -0.5, "brick", [(30.5, DOOR_W, DOOR_H)])  # south: to the range
+wall_with_doors("x", CY1, CX0 - 0.5, CX1 + 0.5, 0, 12, 0.5, "brick", [])
+wall_with_doors("y", CX0, CY0, CY1, 0, 12, -0.5, "brick", [(27.5, DOOR_W, DOOR_H)])  # west: to room A
+wall_with_doors("y", CX1, CY0, CY1, 0, 12, 0.5, "brick", [])  # east: the sign wall
+# Thin pillars (0.25 m square, 5 m tall): the classic SSAO stress case.
+for i in range(4):
+    add(box(23 + i * 1.5, 36, 0, 23.25 + i * 1.5, 36.25, 5, "stone"))
+# A ramp along the north wall up to a 3 m walkway in the north-east corner (14 degrees).
+add(ramp_x(28, 40, 41, 44, 0, 0, 3, "concrete"))
+add(box(40, 40, 0, 44, 44, 3, "concrete"))
+# A low wall to take cover behind.
+add(box(30, 28, 0, 34, 28.5, 1.125, "concrete"))
+
+# --- Corridor west from the courtyard to room A: 4 m long, 2.5 m wide, 3.5 m high.
+# (Everything stops at x = 19.5, where the courtyard wall begins: no coplanar overlaps.)
+add(box(16.5, 27, -0.5, 19.5, 29.5, 0, "concrete", top="tile_floor"))
+add(box(16.5, 26.5, 0, 19.5, 27, 3.5, "plaster"))
+add(box(16.5, 29.5, 0, 19.5, 30, 3.5, "plaster"))
+add(box(16.5, 26.5, 3.5, 19.5, 30, 4.0, "plaster"))
+
+# --- Room A: 14 x 12 m, 4 m high, doors east (corridor) and north (to room B).
+room(2, 22, 16, 34, 4, "plaster", "tile_floor", "plaster",
+     doors={"e": [(27.5, DOOR_W, DOOR_H)], "n": [(8.0, DOOR_W, DOOR_H)]})
+for i in range(3):  # crates in room A
+    entity("prop_crate", origin=point(5 + i * 1.25, 25, 0), size="0.75")
+
+# --- Corridor north from room A to room B: 3 m wide, 4 m long.
+add(box(7.5, 34.5, -0.5, 10, 37.5, 0, "concrete", top="tile_floor"))
+add(box(7, 34.5, 0, 7.5, 37.5, 3.5, "plaster"))
+add(box(10, 34.5, 0, 10.5, 37.5, 3.5, "plaster"))
+add(box(7, 34.5, 3.5, 10.5, 37.5, 4.0, "plaster"))
+
+# --- Room B: 14 x 14 m, 6 m high, with stairs (10 x 0.25 m) up to a 2.5 m mezzanine.
+room(2, 38, 16, 52, 6, "plaster", "wood_trim", "plaster", doors={"s": [(8.0, DOOR_W, DOOR_H)]})
+stairs_y(12, 15.5, 40, 0, 10, 0.25, 0.375, "wood_trim")
+add(box(2, 43.75, 2.25, 16, 52, 2.5, "wood_trim"))  # mezzanine floor
+add(box(2, 43.75, 0, 2.5, 44.25, 2.25, "metal_floor"))  # its supports
+add(box(8, 43.75, 0, 8.5, 44.25, 2.25, "metal_floor"))
+add(box(2, 43.5, 2.5, 11.5, 43.75, 3.5, "metal_floor"))  # railing
+entity("prop_crate", origin=point(4, 48, 2.5), size="0.75")
+
+# --- Firing range: 42 x 6 m, 5 m high, reached from the courtyard through a corridor.
+room(10, 3, 52, 9, 5, "concrete", "concrete", "concrete", doors={"n": [(30.5, DOOR_W, DOOR_H)]})
+add(box(14, 3, 0, 14.5, 7.5, 1.125, "wood_trim"))  # the shooter's booth counter
+add(box(14, 3, 2.5, 14.5, 9, 5, "concrete"))      # booth front wall above the counter
+# Corridor from the courtyard's south door to the range: 11 m, 2.5 m wide (the smoke-test corridor).
+add(box(30, 9.5, -0.5, 32.5, 19.5, 0, "concrete", top="metal_floor"))
+add(box(29.5, 9.5, 0, 30, 19.5, 3, "concrete"))
+add(box(32.5, 9.5, 0, 33, 19.5, 3, "concrete"))
+add(box(29.5, 9.5, 3, 33, 19.5, 3.5, "concrete"))
+# Clip brush: keeps players off the top of the booth counter.
+add(box(14, 3, 1.125, 14.5, 7.5, 2.5, "clip"))
+
+# --- Sky box: the whole level sits inside it (the map is sealed).
+S0, S1, TOP = -2, 62, 16
+add(box(S0, S0, -1.5, S1, S1, -1, "sky"))
+add(box(S0, S0, TOP, S1, S1, TOP + 0.5, "sky"))
+add(box(S0 - 0.5, S0, -1.5, S0, S1, TOP + 0.5, "sky"))
+add(box(S1, S0, -1.5, S1 + 0.5, S1, TOP + 0.5, "sky"))
+add(box(S0, S0 - 0.5, -1.5, S1, S0, TOP + 0.5, "sky"))
+add(box(S0, S1, -1.5, S1, S1 + 0.5, TOP + 0.5, "sky"))
+
+# --- Entities.
+entity("info_player_start", origin=point(26, 24, 0.75), angle="135")  # courtyard, facing the west door
+entity("info_sign", origin=point(44, 32, 4), angle="180", text="OBSCURA", width="5", height="1.5")
+for x, y, z, l in [(6, 25, 3.5, 280), (12, 31, 3.5, 280), (9, 45, 5.5, 320), (9, 50, 2, 220),
+                   (18, 28.25, 3, 200), (8.75, 36, 3, 200), (31.25, 14.5, 2.5, 220), (31.25, 22, 2.5, 200)]:
+    entity("light", origin=point(x, y, z), light=str(l), _color="1 0.92 0.8")
+for x in (16, 26, 36, 46):
+    entity("light", origin=point(x, 6, 4.5), light="300", _color="0.95 0.97 1")
+entity("info_player_deathmatch", origin=point(40, 30, 0.75), angle="180")
+
+
+def write(out):
+    out.write("// Game: Quake\n// Format: Valve\n// Generated by tools/levelgen/make_arena.py: edit the script, not this file.\n")
+    out.write("// entity 0\n{\n")
+    for k, v in [("classname", "worldspawn"), ("mapversion", "220"), ("message", "Obscura arena"),
+                 ("units_per_metre", str(UNITS)), ("_sunlight", "220"), ("_sun_mangle", "-60 -55 0"),
+                 ("_sunlight_color", "255 240 220"), ("_sunlight2", "120"), ("_sunlight2_color", "200 215 255")]:
+        out.write(f'"{k}" "{v}"\n')
+    for i, b in enumerate(brushes):
+        out.write(f"// brush {i}\n{{\n" + "\n".join(b) + "\n}\n")
+    out.write("}\n")
+    # A trigger volume (invisible, not solid) at the range door, to exercise brush-entity classes.
+    out.write('// entity 1\n{\n"classname" "trigger_multiple"\n{\n' + "\n".join(box(30, 9.5, 0, 32.5, 10.5, 2.5, "trigger")) + "\n}\n}\n")
+    for i, e in enumerate(entities):
+        out.write(f"// entity {i + 2}\n{{\n" + "".join(f'"{k}" "{v}"\n' for k, v in e.items()) + "}\n")
+
+
+def check():
+    for b in brushes:
+        assert len(b) in (6, 7), "every brush is a box or a ramp"
+    assert len(brushes) < 400
+
+
+check()
+write(sys.stdout)
+print(f"make_arena: {len(brushes)} brushes, {len(entities) + 2} entities", file=sys.stderr)
