@@ -46,9 +46,9 @@ const std::string& LevelMaterials::resolve(const std::string& texture) {
     if (mm.resourceExists(authored, group_)) return cache_[key] = authored;
 
     // Fallback: a texture generated from the name on a clone of the base level material.
-    const texgen::ImageRGBA pixels = texgen::generateTexture(key, kFallbackTextureSize);
+    const Image pixels = texgen::generateTexture(key, kFallbackTextureSize);
     Ogre::Image image;
-    image.loadDynamicImage(const_cast<Ogre::uchar*>(pixels.pixels.data()), static_cast<Ogre::uint32>(pixels.width),
+    image.loadDynamicImage(const_cast<Ogre::uchar*>(pixels.rgba.data()), static_cast<Ogre::uint32>(pixels.width),
                            static_cast<Ogre::uint32>(pixels.height), 1, Ogre::PF_BYTE_RGBA);
     const std::string name = "generated/" + key;
     Ogre::TexturePtr tex = Ogre::TextureManager::getSingleton().loadImage(name, group_, image);

@@ -3,15 +3,11 @@
 
 #include "core/rng.h"
 
-#include <png.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <memory>
-#include <stdexcept>
 
 namespace obscura::texgen {
 
@@ -226,48 +222,25 @@ std::uint32_t nameHash(const std::string& name) {
     return h;
 }
 
-ImageRGBA generateTexture(const std::string& textureName, int size) {
+Image generateTexture(const std::string& textureName, int size) {
     size = std::clamp(size, 8, 2048);
     const std::string name = lower(textureName);
     const std::uint32_t seed = nameHash(name);
     const Shader shade = styleFor(name, seed);
-    ImageRGBA img;
+    Image img;
     img.width = img.height = size;
-    img.pixels.resize(static_cast<std::size_t>(size * size * 4));
+    img.rgba.resize(static_cast<std::size_t>(size * size * 4));
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             // Sample at texel centres; the pattern functions are periodic on [0, 1).
             const Colour c = shade((x + 0.5) / size, (y + 0.5) / size);
-            std::uint8_t* p = &img.pixels[static_cast<std::size_t>((y * size + x) * 4)];
+            std::uint8_t* p = &img.rgba[static_cast<std::size_t>((y * size + x) * 4)];
             p[0] = toByte(c.r);
             p[1] = toByte(c.g);
             p[2] = toByte(c.b);
             p[3] = 255;
         }
     return img;
-}
-
-void writePng(const ImageRGBA& image, const std::string& path) {
-    std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "wb"), &std::fclose);
-    if (!file) throw std::runtime_error(path + ": cannot open for writing");
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!png || !info) {
-        png_destroy_write_struct(&png, &info);
-        throw std::runtime_error(path + ": libpng initialisation failed");
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        throw std::runtime_error(path + ": PNG write failed");
-    }
-    png_init_io(png, file.get());
-    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
-                 PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    for (int y = 0; y < image.height; ++y)
-        png_write_row(png, const_cast<png_bytep>(&image.pixels[static_cast<std::size_t>(y * image.width * 4)]));
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
 }
 
 }  // namespace obscura::texgen

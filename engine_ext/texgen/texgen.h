@@ -5,21 +5,14 @@
 // over the image). Plain C++: used by the build-time tool and for runtime fallbacks.
 #pragma once
 
+#include "core/image.h"
+
 #include <cstdint>
 #include <string>
-#include <vector>
 
 namespace obscura::texgen {
 
-struct ImageRGBA {
-    int width = 0, height = 0;
-    std::vector<std::uint8_t> pixels;  // RGBA8, row-major, top row first
-};
-
 std::uint32_t nameHash(const std::string& name);  // FNV-1a 32-bit of the lower-cased name
-ImageRGBA generateTexture(const std::string& textureName, int size = 128);
-
-// Writes a PNG with libpng; throws std::runtime_error naming the file on failure.
-void writePng(const ImageRGBA& image, const std::string& path);
+Image generateTexture(const std::string& textureName, int size = 128);
 
 }  // namespace obscura::texgen

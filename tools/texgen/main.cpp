@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
             std::string file = argv[i];
             for (char& c : file)
                 if (c == '/') c = '_';
-            obscura::texgen::writePng(obscura::texgen::generateTexture(argv[i], 128),
+            obscura::writePng(obscura::texgen::generateTexture(argv[i], 128),
                                       (std::filesystem::path(argv[1]) / (file + ".png")).string());
         }
     } catch (const std::exception& e) {
