@@ -154,7 +154,11 @@ public:
                 sawVersion = true;
                 continue;
             }
-            if (ended) fail("'" + w[0] + "' after 'end', expected nothing");
+            if (ended) {
+                std::string text = w[0];
+                for (std::size_t i = 1; i < w.size(); ++i) text += " " + w[i];
+                fail("'" + text + "' after 'end', expected nothing");
+            }
             const bool isTick = std::isdigit(static_cast<unsigned char>(w[0][0])) || w[0][0] == '-';
             if (!isTick) {
                 if (!s.commands.empty()) fail("header '" + w[0] + "' after the first command, expected '<tick> <command>'");
