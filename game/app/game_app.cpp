@@ -65,7 +65,15 @@ std::string GameApp::dataPath(const std::string& relative) const {
 void GameApp::createRoot() {
     // Our own log (Bites would print hundreds of coloured lines to stdout otherwise).
     std::string logFile = settings_.logFile;
-    if (logFile.empty()) logFile = mFSLayer->getWritablePath("obscura.log");
+    if (logFile.empty()) {
+        // $XDG_CACHE_HOME/obscura/obscura.log (tests point XDG_CACHE_HOME into the build tree).
+        const char* xdg = std::getenv("XDG_CACHE_HOME");
+        const char* home = std::getenv("HOME");
+        const std::filesystem::path dir = std::filesystem::path(xdg && *xdg ? xdg : std::string(home ? home : "/tmp") + "/.cache") / "obscura";
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        logFile = (dir / "obscura.log").string();
+    }
     auto* logs = new Ogre::LogManager();
     logs->createLog(logFile, true, false, false);
     mRoot = OGRE_NEW Ogre::Root("", "", "");
@@ -84,13 +92,6 @@ bool GameApp::oneTimeConfig() {
 }
 
 void GameApp::setup() {
-    // SDL needs an X display for the GL context even headless; say so instead of crashing.
-    if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
-        const char* display = std::getenv("DISPLAY");
-        throw std::runtime_error(std::string("cannot open an X display (DISPLAY=") + (display ? display : "unset") +
-                                 "): " + SDL_GetError() +
-                                 ". Run under Xvfb, e.g. `xvfb-run -a obscura --headless`, or use scripts/play.sh");
-    }
     mRoot->initialise(false);
     if (settings_.headless) {
         Ogre::NameValuePairList misc{{"hidden", "true"}};
@@ -346,6 +347,15 @@ std::string GameApp::rendererDescription() const {
 
 int GameApp::run() {
     prepareReplay();
+    // OGRE's GL3Plus is GLX-only: SDL must use X11 (not Wayland or a dummy driver), and even a
+    // headless run needs an X display for the GL context. Say so before OGRE trips over it.
+    SDL_SetHint(SDL_HINT_VIDEODRIVER, "x11");
+    if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
+        const char* display = std::getenv("DISPLAY");
+        throw std::runtime_error(std::string("cannot open an X display (DISPLAY=") + (display ? display : "unset") +
+                                 "): " + SDL_GetError() +
+                                 ". Run under Xvfb, e.g. `xvfb-run -a obscura --headless`, or use scripts/play.sh");
+    }
     if (!settings_.record.empty())
         recorder_ = std::make_unique<replay::Recorder>(settings_.level, settings_.seed, settings_.width,
                                                        settings_.height, settings_.tickRate);

@@ -121,7 +121,7 @@ CX0, CY0, CX1, CY1 = 20, 20, 44, 44
 add(box(CX0 - 0.5, CY0 - 0.5, -0.5, CX1 + 0.5, CY1 + 0.5, 0, "concrete", top="stone"))
 wall_with_doors("x", CY0, CX0 - 0.5, CX1 + 0.5, 0, 12, -0.5, "brick", [(30.5, DOOR_W, DOOR_H)])  # south: to the range
 wall_with_doors("x", CY1, CX0 - 0.5, CX1 + 0.5, 0, 12, 0.5, "brick", [])
-wall_with_doors("y", CX0, CY0, CY1, 0, 12, -0.5, "brick", [(27.5, DOOR_W, DOOR_H)])  # west: to room A
+wall_with_doors("y", CX0, CY0, CY1, 0, 12, -0.5, "brick", [(27.25, 2.0, DOOR_H)])  # west: to room A
 wall_with_doors("y", CX1, CY0, CY1, 0, 12, 0.5, "brick", [])  # east: the sign wall
 # Thin pillars (0.25 m square, 5 m tall): the classic SSAO stress case.
 for i in range(4):
@@ -132,16 +132,16 @@ add(box(40, 40, 0, 44, 44, 3, "concrete"))
 # A low wall to take cover behind.
 add(box(30, 28, 0, 34, 28.5, 1.125, "concrete"))
 
-# --- Corridor west from the courtyard to room A: 4 m long, 2.5 m wide, 3.5 m high.
+# --- Corridor west from the courtyard to room A: 3 m long, 2 m wide (as its doorways), 3.5 m high.
 # (Everything stops at x = 19.5, where the courtyard wall begins: no coplanar overlaps.)
-add(box(16.5, 27, -0.5, 19.5, 29.5, 0, "concrete", top="tile_floor"))
-add(box(16.5, 26.5, 0, 19.5, 27, 3.5, "plaster"))
-add(box(16.5, 29.5, 0, 19.5, 30, 3.5, "plaster"))
-add(box(16.5, 26.5, 3.5, 19.5, 30, 4.0, "plaster"))
+add(box(16.5, 27.25, -0.5, 19.5, 29.25, 0, "concrete", top="tile_floor"))
+add(box(16.5, 26.75, 0, 19.5, 27.25, 3.5, "plaster"))
+add(box(16.5, 29.25, 0, 19.5, 29.75, 3.5, "plaster"))
+add(box(16.5, 26.75, 3.5, 19.5, 29.75, 4.0, "plaster"))
 
 # --- Room A: 14 x 12 m, 4 m high, doors east (corridor) and north (to room B).
 room(2, 22, 16, 34, 4, "plaster", "tile_floor", "plaster",
-     doors={"e": [(27.5, DOOR_W, DOOR_H)], "n": [(8.0, DOOR_W, DOOR_H)]})
+     doors={"e": [(27.25, 2.0, DOOR_H)], "n": [(8.0, DOOR_W, DOOR_H)]})
 for i in range(3):  # crates in room A
     entity("prop_crate", origin=point(5 + i * 1.25, 25, 0), size="0.75")
 

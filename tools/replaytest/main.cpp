@@ -1,0 +1,171 @@
+// obscura_replaytest: one replay test of the bench. Runs the game headless on a replay script
+// (twice with --runs 2, checking that hashes and captures are identical), compares every capture
+// with its reference image within tolerances, and on failure writes an HTML report (reference,
+// actual, amplified difference, metrics, renderer versions) and prints its path.
+// With --rebaseline it copies the captures over the references instead (after a reviewed change).
+//
+//   obscura_replaytest --game BIN --replay FILE --references DIR --out DIR [--runs N]
+//                      [--min-ssim X] [--min-psnr X] [--pixel-threshold N] [--max-pixels-over N]
+//                      [--rebaseline] [-- extra game arguments]
+#include "imagecmp/report.h"
+#include "replay/replay_script.h"
+
+#include <boost/program_options.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+namespace po = boost::program_options;
+using namespace obscura;
+
+namespace {
+struct RunResult {
+    int exitCode = -1;
+    std::string output;
+};
+
+std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+RunResult run(const std::string& command) {
+    RunResult r;
+    FILE* p = popen((command + " 2>&1").c_str(), "r");
+    if (!p) return r;
+    char buf[4096];
+    while (std::fgets(buf, sizeof buf, p)) r.output += buf;
+    const int status = pclose(p);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+    return r;
+}
+
+// Lines of the game's output that must be identical run to run.
+std::string hashLines(const std::string& out) {
+    std::istringstream in(out);
+    std::string line, keep;
+    while (std::getline(in, line))
+        if (line.rfind("hash ", 0) == 0 || line.rfind("state-hash ", 0) == 0) keep += line + "\n";
+    return keep;
+}
+
+std::string rendererLine(const std::string& out) {
+    std::istringstream in(out);
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("renderer ", 0) == 0) return line.substr(9);
+    return "unknown";
+}
+
+std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string game, replayPath, refDir, outDir;
+    int runs = 1;
+    bool rebaseline = false;
+    imagecmp::Tolerance tol;
+    std::vector<std::string> extra;
+    po::options_description desc("obscura_replaytest options");
+    desc.add_options()("game", po::value(&game)->required(), "the obscura executable")
+        ("replay", po::value(&replayPath)->required(), "replay script")
+        ("references", po::value(&refDir)->required(), "folder of reference PNGs (<capture>.png) and VERSIONS.txt")
+        ("out", po::value(&outDir)->required(), "folder for captures and the report")
+        ("runs", po::value(&runs), "play the replay this many times; all must agree")
+        ("min-ssim", po::value(&tol.minSsim), "")("min-psnr", po::value(&tol.minPsnr), "")
+        ("pixel-threshold", po::value(&tol.pixelThreshold), "")("max-pixels-over", po::value(&tol.maxPixelsOver), "")
+        ("max-channel-diff", po::value(&tol.maxChannelDiff), "")
+        ("rebaseline", po::bool_switch(&rebaseline), "copy the captures over the references")
+        ("extra", po::value(&extra)->multitoken(), "extra arguments for the game");
+    try {
+        po::variables_map vm;
+        po::store(po::parse_command_line(argc, argv, desc), vm);
+        po::notify(vm);
+    } catch (const po::error& e) {
+        std::cerr << "obscura_replaytest: " << e.what() << "\n" << desc;
+        return 2;
+    }
+    if (std::getenv("OBSCURA_REBASELINE")) rebaseline = true;
+
+    const replay::Script script = replay::loadScript(replayPath);
+    const std::string testName = fs::path(replayPath).stem().string();
+    fs::remove_all(outDir);
+    std::string firstHashes, firstRenderer;
+    std::vector<std::string> captureNames;
+    for (const auto& c : script.commands)
+        if (c.type == replay::Command::Type::Capture) captureNames.push_back(c.name);
+
+    for (int i = 0; i < runs; ++i) {
+        const fs::path dir = fs::path(outDir) / ("run" + std::to_string(i + 1));
+        fs::create_directories(dir);
+        std::string cmd = quote(game) + " --replay " + quote(replayPath) + " --capture-dir " + quote(dir.string()) +
+                          " --log " + quote((dir / "obscura.log").string());
+        for (const auto& e : extra) cmd += " " + quote(e);
+        const RunResult r = run(cmd);
+        std::ofstream(dir / "output.txt") << r.output;
+        if (r.exitCode != 0) {
+            std::cout << "FAIL: run " << i + 1 << " exited " << r.exitCode << ":\n" << r.output;
+            return 1;
+        }
+        if (i == 0) {
+            firstHashes = hashLines(r.output);
+            firstRenderer = rendererLine(r.output);
+            std::cout << firstHashes;
+            continue;
+        }
+        // Determinism: same hashes, byte-identical captures.
+        if (hashLines(r.output) != firstHashes) {
+            std::cout << "FAIL: run " << i + 1 << " printed different hashes:\n" << hashLines(r.output);
+            return 1;
+        }
+        for (const auto& name : captureNames)
+            if (readFile(dir / (name + ".png")) != readFile(fs::path(outDir) / "run1" / (name + ".png"))) {
+                std::cout << "FAIL: capture " << name << " differs between run 1 and run " << i + 1 << "\n";
+                return 1;
+            }
+        std::cout << "run " << i + 1 << ": identical hashes and captures\n";
+    }
+
+    const fs::path actualDir = fs::path(outDir) / "run1";
+    if (rebaseline) {
+        fs::create_directories(refDir);
+        for (const auto& name : captureNames)
+            fs::copy_file(actualDir / (name + ".png"), fs::path(refDir) / (name + ".png"), fs::copy_options::overwrite_existing);
+        std::ofstream(fs::path(refDir) / "VERSIONS.txt") << firstRenderer << "\n";
+        std::cout << "rebaselined " << captureNames.size() << " references in " << refDir << "\n";
+        return 0;
+    }
+
+    const std::string refVersions = [&] {
+        std::string v = readFile(fs::path(refDir) / "VERSIONS.txt");
+        while (!v.empty() && v.back() == '\n') v.pop_back();
+        return v.empty() ? std::string("unknown") : v;
+    }();
+    std::vector<imagecmp::ReportEntry> entries;
+    bool ok = true;
+    for (const auto& name : captureNames) {
+        imagecmp::ReportEntry e{name, (fs::path(refDir) / (name + ".png")).string(), (actualDir / (name + ".png")).string(), {}, tol, {}};
+        try {
+            e.metrics = imagecmp::compare(readPng(e.referencePath), readPng(e.actualPath), tol.pixelThreshold);
+            e.failures = imagecmp::failures(e.metrics, tol);
+        } catch (const std::exception& ex) {
+            e.failures.push_back(ex.what());
+        }
+        std::cout << name << ": " << imagecmp::formatMetrics(e.metrics) << (e.failures.empty() ? " ok" : " FAIL") << "\n";
+        for (const auto& f : e.failures) std::cout << "  " << f << "\n";
+        ok &= e.failures.empty();
+        entries.push_back(e);
+    }
+    if (!ok) {
+        const std::string report = imagecmp::writeReport((fs::path(outDir) / "report").string(), testName, entries, refVersions, firstRenderer);
+        std::cout << "FAIL: " << testName << " differs from its references (made on: " << refVersions << ")\nreport: " << report << "\n";
+        return 1;
+    }
+    return 0;
+}
