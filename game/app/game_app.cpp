@@ -287,6 +287,16 @@ void GameApp::renderFrame(double frameMs) {
     mRoot->renderOneFrame();
 }
 
+void GameApp::finishFrame() {
+    // GL queues work; llvmpipe runs it when something waits. Reading one pixel back makes each
+    // timed frame include its own rendering instead of a later frame's.
+    Ogre::RenderTarget* target = getRenderWindow();
+    if (offscreen_) target = offscreen_->getBuffer()->getRenderTarget();
+    Ogre::uint8 pixel[4];
+    Ogre::PixelBox box(1, 1, 1, Ogre::PF_BYTE_RGBA, pixel);
+    target->copyContentsToMemory(Ogre::Box(0, 0, 1, 1), box);
+}
+
 void GameApp::writeScreenshot(const std::string& path) {
     Ogre::RenderTarget* target = getRenderWindow();
     if (offscreen_) target = offscreen_->getBuffer()->getRenderTarget();
@@ -423,6 +433,7 @@ int GameApp::runReplay(bool timed) {
         updateView(1.0);
         // Captures show the fixed tick time, so the same replay gives the same pixels.
         renderFrame(timed ? lastMs : fixedMs);
+        if (timed) finishFrame();
         for (const auto* c : due.captures) writeCapture(c->name);
         for (const auto* c : due.hashes) {
             const std::string hex = sim_->stateHashHex();

@@ -66,6 +66,7 @@ private:
     void handleTriggeredActions();
     void renderFrame(double frameMs);
     void writeScreenshot(const std::string& path);
+    void finishFrame();
     std::string dataPath(const std::string& relative) const;
 
     Settings settings_;

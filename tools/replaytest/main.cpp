@@ -58,6 +58,12 @@ std::string rendererLine(const std::string& out) {
     return "unknown";
 }
 
+// The renderer line the game prints does not carry Mesa's release; the package does.
+std::string mesaVersion() {
+    std::string v = run("dpkg-query -W -f '${Version}' libgl1-mesa-dri").output;
+    return v.empty() || v.find("no packages") != std::string::npos ? "unknown" : v;
+}
+
 std::string readFile(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     std::stringstream ss;
@@ -115,7 +121,7 @@ int main(int argc, char** argv) {
         }
         if (i == 0) {
             firstHashes = hashLines(r.output);
-            firstRenderer = rendererLine(r.output);
+            firstRenderer = rendererLine(r.output) + " | Mesa " + mesaVersion();
             std::cout << firstHashes;
             continue;
         }

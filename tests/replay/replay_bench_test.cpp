@@ -1,0 +1,129 @@
+// The replay bench end to end, with the real game: record -> replay round trip, divergence
+// detection, script errors, and a deliberately altered reference failing with an HTML report.
+#include <gtest/gtest.h>
+
+#include "core/image.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+struct Result {
+    int code = -1;
+    std::string out;
+};
+
+Result sh(const std::string& cmd) {
+    Result r;
+    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+    char buf[4096];
+    while (p && std::fgets(buf, sizeof buf, p)) r.out += buf;
+    const int status = p ? pclose(p) : -1;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+    return r;
+}
+
+const std::string kGame = OBSCURA_GAME;
+const std::string kScripts = OBSCURA_REPLAY_SCRIPTS;
+
+std::string temp(const std::string& name) { return (fs::path(testing::TempDir()) / ("replaybench_" + name)).string(); }
+
+std::string read(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string finalHash(const std::string& out) {
+    const auto at = out.rfind("state-hash ");
+    return at == std::string::npos ? "" : out.substr(at + 11, 16);
+}
+}  // namespace
+
+TEST(ReplayBench, RecordingPlaysBackToTheSameHashes) {
+    const std::string rec = temp("walk_recorded.replay");
+    fs::remove(rec);
+    // Record while a scripted session plays: every injected event reaches the recorder as a key would.
+    const Result a = sh("'" + kGame + "' --replay '" + kScripts + "/arena_walk.replay' --capture-dir " + temp("cap_a") + " --record " + rec);
+    ASSERT_EQ(a.code, 0) << a.out;
+    const std::string text = read(rec);
+    EXPECT_NE(text.find(" key w down"), std::string::npos) << text;
+    EXPECT_NE(text.find(" mouse -441 0"), std::string::npos) << text;
+    EXPECT_NE(text.find(" hash "), std::string::npos) << text;  // expected hashes, once a second
+
+    const Result b = sh("'" + kGame + "' --replay " + rec + " --capture-dir " + temp("cap_b"));
+    ASSERT_EQ(b.code, 0) << b.out;
+    EXPECT_EQ(finalHash(a.out), finalHash(b.out));
+    EXPECT_EQ(b.out.find("diverged"), std::string::npos) << b.out;
+}
+
+TEST(ReplayBench, DivergingPlaybackNamesTheFirstTick) {
+    const std::string rec = temp("walk_recorded2.replay");
+    ASSERT_EQ(sh("'" + kGame + "' --replay '" + kScripts + "/arena_walk.replay' --capture-dir " + temp("cap_c") + " --record " + rec).code, 0);
+    // Tamper with the first mouse motion: the state departs at tick 0, so the first check fails.
+    std::string text = read(rec);
+    text = std::regex_replace(text, std::regex(" mouse -441 0"), " mouse -440 0");
+    std::ofstream(rec) << text;
+    const Result r = sh("'" + kGame + "' --replay " + rec + " --capture-dir " + temp("cap_d"));
+    EXPECT_EQ(r.code, 3) << r.out;
+    EXPECT_NE(r.out.find("replay diverged at tick 59"), std::string::npos) << r.out;
+}
+
+TEST(ReplayBench, ScriptErrorsExitWithFileAndLine) {
+    const std::string bad = temp("bad.replay");
+    std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 key w down\n3 key w up\n";
+    Result r = sh("'" + kGame + "' --replay " + bad + " --capture-dir " + temp("cap_e"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find(bad + ":4: tick 3 is before tick 5 of line 3"), std::string::npos) << r.out;
+
+    std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 set fov wide\n";
+    r = sh("'" + kGame + "' --replay " + bad + " --capture-dir " + temp("cap_e"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find(bad + ":3: setting 'fov': 'wide' is not a number"), std::string::npos) << r.out;
+
+    std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 set width 100\n";
+    r = sh("'" + kGame + "' --replay " + bad + " --capture-dir " + temp("cap_e"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("unknown setting 'width'"), std::string::npos) << r.out;
+
+    std::ofstream(bad) << "obscura-replay 1\nlevel nowhere/none.map\n5 hash\n";
+    r = sh("'" + kGame + "' --replay " + bad + " --capture-dir " + temp("cap_e"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("level 'nowhere/none.map' not found"), std::string::npos) << r.out;
+
+    std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 capture x\n";
+    r = sh("'" + kGame + "' --replay " + bad + " --capture-dir /proc/obscura-cannot-write");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.out.find("cannot be written"), std::string::npos) << r.out;
+}
+
+TEST(ReplayBench, AlteredReferenceFailsWithAnHtmlReport) {
+    // Copy the real references, paint a block into one, and run the replay test against them.
+    const fs::path refs = temp("altered_refs");
+    fs::remove_all(refs);
+    fs::copy(OBSCURA_REPLAY_REFERENCES "/arena_walk", refs);
+    obscura::Image im = obscura::readPng((refs / "corridor.png").string());
+    for (int y = 40; y < 80; ++y)
+        for (int x = 40; x < 120; ++x) im.rgba[static_cast<std::size_t>((y * im.width + x) * 4)] = 255;
+    obscura::writePng(im, (refs / "corridor.png").string());
+
+    const std::string out = temp("altered_out");
+    const Result r = sh("'" OBSCURA_REPLAYTEST "' --game '" + kGame + "' --replay '" + kScripts + "/arena_walk.replay' --references " +
+                        refs.string() + " --out " + out);
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("corridor: "), std::string::npos);
+    const auto at = r.out.find("report: ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const std::string report = r.out.substr(at + 8, r.out.find('\n', at) - at - 8);
+    EXPECT_TRUE(fs::exists(report)) << report;
+    EXPECT_TRUE(fs::exists(fs::path(report).parent_path() / "corridor.diff.png"));
+    EXPECT_NE(read(report).find("corridor: FAIL"), std::string::npos);
+    EXPECT_NE(read(report).find("courtyard: pass"), std::string::npos);
+}
