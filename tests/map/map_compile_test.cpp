@@ -132,8 +132,7 @@ TEST(MapCompile, BadBrushIsSkippedWithItsLine) {
 }
 
 TEST(MapCompile, LibreQuakeE3m4LoadsWhole) {
-    const char* shared = std::getenv("OBSCURA_SHARED_DIR");
-    const std::filesystem::path path = std::filesystem::path(shared ? shared : "../shared") / "maps/librequake/e3m4.map";
+    const std::filesystem::path path = std::filesystem::path(OBSCURA_SHARED_DIR) / "maps/librequake/e3m4.map";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
     const auto t0 = std::chrono::steady_clock::now();
     const MapFile m = loadMapFile(path.string());

@@ -30,7 +30,7 @@ double walk(const map::Level& level, int ticks, sim::Simulation& s) {
 }  // namespace
 
 TEST(LevelWalk, DefaultArena) {
-    const auto path = std::filesystem::path(std::getenv("OBSCURA_SOURCE_DIR")) / "media/levels/arena.map";
+    const auto path = std::filesystem::path(OBSCURA_SOURCE_DIR) / "media/levels/arena.map";
     const map::Level level = map::loadLevel(path.string());
     sim::Simulation s(level, {});
     for (int t = 0; t < 30; ++t) s.step({});
@@ -39,8 +39,7 @@ TEST(LevelWalk, DefaultArena) {
 }
 
 TEST(LevelWalk, LibreQuakeE3m4) {
-    const char* shared = std::getenv("OBSCURA_SHARED_DIR");
-    const auto path = std::filesystem::path(shared ? shared : "../shared") / "maps/librequake/e3m4.map";
+    const auto path = std::filesystem::path(OBSCURA_SHARED_DIR) / "maps/librequake/e3m4.map";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
     const map::Level level = map::loadLevel(path.string());
     sim::Simulation s(level, {});
