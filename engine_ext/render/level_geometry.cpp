@@ -17,8 +17,14 @@ namespace obscura::render {
 namespace {
 struct ChunkKey {
     long x, y, z;
-    bool operator<(const ChunkKey& o) const { return std::tie(x, y, z) < std::tie(o.x, o.y, o.z); }
+    bool sky;  // sky faces batch apart: they must not cast the sun's shadow over the whole level
+    bool operator<(const ChunkKey& o) const { return std::tie(x, y, z, sky) < std::tie(o.x, o.y, o.z, o.sky); }
 };
+
+bool isSky(const std::string& texture) {
+    return texture.size() >= 3 && (texture[0] == 's' || texture[0] == 'S') && (texture[1] == 'k' || texture[1] == 'K') &&
+           (texture[2] == 'y' || texture[2] == 'Y');
+}
 
 Ogre::Vector3 toOgre(const Vec3& v) {
     return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
@@ -55,14 +61,14 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
             for (const auto& v : poly.vertices) c += v.position;
             c = c / static_cast<double>(poly.vertices.size());
             const ChunkKey key{static_cast<long>(std::floor(c.x / chunkSize)), static_cast<long>(std::floor(c.y / chunkSize)),
-                               static_cast<long>(std::floor(c.z / chunkSize))};
+                               static_cast<long>(std::floor(c.z / chunkSize)), isSky(poly.texture)};
             chunks[key][materials.resolve(poly.texture)].push_back(&poly);
         }
     }
 
     for (const auto& [key, byMaterial] : chunks) {
         auto* mo = scene_.createManualObject();
-        mo->setCastShadows(false);
+        mo->setCastShadows(!key.sky);  // into the sun's shadow map
         for (const auto& [material, polys] : byMaterial) {
             mo->begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
             Ogre::uint32 base = 0;

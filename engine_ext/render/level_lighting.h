@@ -1,9 +1,14 @@
 // Level-wide lighting constants from worldspawn keys (sun, sky ambient), pushed into the
-// Obscura/LevelFS program's uniforms. The values themselves are computed in plain C++
+// GLSL programs through OGRE shared parameters (media/materials/level.program). The values themselves are computed in plain C++
 // (computeLevelLighting) so they are testable without a GPU.
 #pragma once
 
 #include "map/level.h"
+
+namespace Ogre {
+class Light;
+class SceneManager;
+}  // namespace Ogre
 
 namespace obscura::render {
 
@@ -18,7 +23,13 @@ struct LevelLightingParams {
 // ericw-tools), `_sunlight_color`, `_sunlight2` (sky-dome light) and `_sunlight2_color`.
 LevelLightingParams computeLevelLighting(const map::Level& level);
 
-// Sets the uniforms of Obscura/LevelFS (sunDirection, sunColour, skyAmbient, groundAmbient).
+// Sets the shared parameters ObscuraLighting (sunDirection, sunColour, skyAmbient, groundAmbient)
+// that the level and shadow-caster programs reference.
 void applyLevelLighting(const map::Level& level);
+
+// Turns on the sun's shadow map (OGRE integrated texture shadows, one 1024^2 float texture
+// focused on the view frustum) and adds the sun as a shadow-casting directional light.
+// Returns the light (owned by the scene manager), or null when the level has no sun.
+Ogre::Light* createSun(Ogre::SceneManager& scene, const map::Level& level);
 
 }  // namespace obscura::render

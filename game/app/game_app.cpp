@@ -198,7 +198,8 @@ void GameApp::createScene() {
 
     materials_ = std::make_unique<render::LevelMaterials>(Ogre::RGN_DEFAULT);
     auto start = std::chrono::steady_clock::now();
-    render::applyLevelLighting(*level_);  // before any level material loads: they copy these defaults
+    render::applyLevelLighting(*level_);
+    render::createSun(*scene_, *level_);
     levelGeometry_ = std::make_unique<render::LevelGeometry>(*scene_, *level_, *materials_);
 
     // misc_model meshes: rendered, and their triangles become static colliders.

@@ -1,7 +1,9 @@
 #version 330 core
-// Level surfaces: world-space position and normal for per-pixel lighting. See level.frag.
+// Level surfaces: world-space position and normal for per-pixel lighting, and the position in the
+// sun's shadow map (OGRE texture shadows, texture 0). See level.frag.
 uniform mat4 worldViewProj;
 uniform mat4 world;
+uniform mat4 sunShadowViewProj;  // world -> shadow map (xy in [0,1], z in clip units)
 
 in vec4 vertex;
 in vec3 normal;
@@ -10,11 +12,14 @@ in vec2 uv0;
 out vec3 vWorldPos;
 out vec3 vNormal;
 out vec2 vUv;
+out vec4 vShadowPos;
 
 void main()
 {
-    vWorldPos = (world * vertex).xyz;
+    vec4 worldPos = world * vertex;
+    vWorldPos = worldPos.xyz;
     vNormal = mat3(world) * normal;
     vUv = uv0;
+    vShadowPos = sunShadowViewProj * worldPos;
     gl_Position = worldViewProj * vertex;
 }

@@ -1,0 +1,11 @@
+#version 330 core
+// Stores -height/10^4, where height is the caster's distance towards the sun (metres). The map is
+// cleared to 1.0 = "nothing here", lower than any caster inside +-10 km, so uncovered texels read
+// as lit; storing world-space height (not NDC depth) makes the test independent of the shadow
+// camera's near/far planes, which OGRE chooses per frame.
+in float vHeight;
+out vec4 fragColour;
+void main()
+{
+    fragColour = vec4(-vHeight * 1e-4, 0.0, 0.0, 1.0);
+}
