@@ -3,15 +3,6 @@
 
 namespace obscura {
 
-namespace {
-// Mouse buttons in scripts are left/right/middle; the bindings call them mouse1/mouse2/mouse3.
-std::string buttonKey(const std::string& name) {
-    if (name == "left") return "mouse1";
-    if (name == "right") return "mouse2";
-    return "mouse3";
-}
-}  // namespace
-
 ReplayPlayer::ReplayPlayer(const replay::Script& script) : script_(script), lastTick_(script.endTick()) {}
 
 ReplayTick ReplayPlayer::take(std::int64_t tick) {
@@ -27,7 +18,7 @@ ReplayTick ReplayPlayer::take(std::int64_t tick) {
         switch (c.type) {
             case T::Key:
             case T::Button: {
-                const std::string key = c.type == T::Key ? c.name : buttonKey(c.name);
+                const std::string key = c.type == T::Key ? c.name : replay::buttonKeyName(c.name);
                 if (c.action == A::Up) {
                     out.inputs.push_back({ReplayInput::Kind::KeyUp, key, 0, 0});
                 } else {

@@ -5,14 +5,6 @@
 
 namespace obscura::replay {
 
-namespace {
-std::string buttonName(const std::string& key) {
-    if (key == "mouse1") return "left";
-    if (key == "mouse2") return "right";
-    return "middle";
-}
-}  // namespace
-
 Recorder::Recorder(std::string level, std::uint64_t seed, int width, int height, double tickRate) {
     script_.level = std::move(level);
     script_.seed = seed;
@@ -27,7 +19,7 @@ void Recorder::key(std::int64_t tick, const std::string& key, Command::Action ac
     c.action = action;
     if (key.rfind("mouse", 0) == 0) {
         c.type = Command::Type::Button;
-        c.name = buttonName(key);
+        c.name = buttonFromKeyName(key);
     } else {
         c.type = Command::Type::Key;
         c.name = key;
@@ -54,28 +46,18 @@ void Recorder::mouse(std::int64_t tick, int dx, int dy) {
     script_.commands.push_back(c);
 }
 
-void Recorder::capture(std::int64_t tick, const std::string& name) {
+void Recorder::add(std::int64_t tick, Command::Type type, const std::string& name, const std::string& value) {
     Command c;
     c.tick = tick;
-    c.type = Command::Type::Capture;
+    c.type = type;
     c.name = name;
+    c.value = value;
     script_.commands.push_back(c);
 }
 
-void Recorder::hash(std::int64_t tick, const std::string& expected) {
-    Command c;
-    c.tick = tick;
-    c.type = Command::Type::Hash;
-    c.value = expected;
-    script_.commands.push_back(c);
-}
-
-void Recorder::end(std::int64_t tick) {
-    Command c;
-    c.tick = tick;
-    c.type = Command::Type::End;
-    script_.commands.push_back(c);
-}
+void Recorder::capture(std::int64_t tick, const std::string& name) { add(tick, Command::Type::Capture, name, {}); }
+void Recorder::hash(std::int64_t tick, const std::string& expected) { add(tick, Command::Type::Hash, {}, expected); }
+void Recorder::end(std::int64_t tick) { add(tick, Command::Type::End, {}, {}); }
 
 Script Recorder::script() const {
     Script s = script_;

@@ -24,6 +24,7 @@ public:
 
 private:
     void key(std::int64_t tick, const std::string& key, Command::Action action);
+    void add(std::int64_t tick, Command::Type type, const std::string& name, const std::string& value);
     Script script_;
     int mouseIndex_ = -1;  // the mouse command of the latest tick, to merge into
 };

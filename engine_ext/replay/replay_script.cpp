@@ -211,6 +211,14 @@ const std::vector<std::string>& keyNames() {
     return names;
 }
 
+std::string buttonKeyName(const std::string& button) {
+    return button == "left" ? "mouse1" : button == "right" ? "mouse2" : "mouse3";
+}
+
+std::string buttonFromKeyName(const std::string& key) {
+    return key == "mouse1" ? "left" : key == "mouse2" ? "right" : "middle";
+}
+
 Script parseScript(std::string_view text, const std::string& fileName, const std::function<bool(const std::string&)>& isKnownSetting) {
     return Parser(fileName, isKnownSetting).parse(text);
 }

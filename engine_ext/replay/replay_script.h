@@ -62,6 +62,9 @@ struct Script {
 
 // Key names scripts accept (the same as the game's bindings).
 const std::vector<std::string>& keyNames();
+// Script mouse buttons (left/right/middle) <-> the bindings' key names (mouse1/mouse2/mouse3).
+std::string buttonKeyName(const std::string& button);
+std::string buttonFromKeyName(const std::string& key);
 
 Script parseScript(std::string_view text, const std::string& fileName,
                    const std::function<bool(const std::string&)>& isKnownSetting = {});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/image.h"
+#include "run_process.h"
 
 #include <cmath>
 #include <cstdio>
@@ -14,20 +15,10 @@
 namespace fs = std::filesystem;
 
 namespace {
-struct GameRun {
-    int code = -1;
-    std::string out;
-};
+using GameRun = obscura::testing_support::ProcessResult;
 
 GameRun game(const std::string& args, const std::string& env = "") {
-    GameRun r;
-    const std::string cmd = env + " '" OBSCURA_GAME "' " + args + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    char buf[4096];
-    while (p && std::fgets(buf, sizeof buf, p)) r.out += buf;
-    const int status = p ? pclose(p) : -1;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return r;
+    return obscura::testing_support::runProcess(env + " '" OBSCURA_GAME "' " + args);
 }
 
 std::string temp(const std::string& name) { return (fs::path(testing::TempDir()) / name).string(); }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/image.h"
+#include "run_process.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -14,20 +15,8 @@
 namespace fs = std::filesystem;
 
 namespace {
-struct Result {
-    int code = -1;
-    std::string out;
-};
-
-Result sh(const std::string& cmd) {
-    Result r;
-    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-    char buf[4096];
-    while (p && std::fgets(buf, sizeof buf, p)) r.out += buf;
-    const int status = p ? pclose(p) : -1;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-    return r;
-}
+using Result = obscura::testing_support::ProcessResult;
+Result sh(const std::string& cmd) { return obscura::testing_support::runProcess(cmd); }
 
 const std::string kGame = OBSCURA_GAME;
 const std::string kScripts = OBSCURA_REPLAY_SCRIPTS;
