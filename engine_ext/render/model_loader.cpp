@@ -4,6 +4,7 @@
 #include "render/level_materials.h"
 
 #include <Ogre.h>
+#include <OgreMeshSerializer.h>
 
 #include <filesystem>
 
@@ -12,6 +13,27 @@ namespace obscura::render {
 namespace fs = std::filesystem;
 
 namespace {
+// Swaps a material name the mesh asks for but nobody defined for a generated fallback, while
+// the mesh loads (before OGRE would drop the name and warn).
+class FallbackMaterials : public Ogre::MeshSerializerListener {
+public:
+    FallbackMaterials(LevelMaterials& materials, const std::string& group) : materials_(materials), group_(group) {
+        previous_ = Ogre::MeshManager::getSingleton().getListener();
+        Ogre::MeshManager::getSingleton().setListener(this);
+    }
+    ~FallbackMaterials() override { Ogre::MeshManager::getSingleton().setListener(previous_); }
+    void processMaterialName(Ogre::Mesh*, Ogre::String* name) override {
+        if (!Ogre::MaterialManager::getSingleton().resourceExists(*name, group_)) *name = materials_.resolve(*name);
+    }
+    void processSkeletonName(Ogre::Mesh*, Ogre::String*) override {}
+    void processMeshCompleted(Ogre::Mesh*) override {}
+
+private:
+    LevelMaterials& materials_;
+    std::string group_;
+    Ogre::MeshSerializerListener* previous_ = nullptr;
+};
+
 // Appends a submesh's triangles (transformed to world space) to `out`.
 void appendTriangles(const Ogre::VertexData* vd, const Ogre::IndexData* id, const Ogre::Affine3& xf,
                      TriangleMesh& out) {
@@ -41,11 +63,12 @@ void appendTriangles(const Ogre::VertexData* vd, const Ogre::IndexData* id, cons
 }  // namespace
 
 TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,
-                             const std::string& group, LevelMaterials& materials) {
+                        const std::vector<std::string>& searchDirs, const std::string& group, LevelMaterials& materials) {
     auto& rgm = Ogre::ResourceGroupManager::getSingleton();
     std::string meshName = model.mesh;
     // A path: make its folder a resource location and load the file by name.
-    for (const fs::path& candidate : {fs::path(levelPath).parent_path() / model.mesh, fs::path(model.mesh)}) {
+    for (const std::string& dir : searchDirs) {
+        const fs::path candidate = fs::path(model.mesh).is_absolute() ? fs::path(model.mesh) : fs::path(dir) / model.mesh;
         if (!model.mesh.empty() && fs::is_regular_file(candidate)) {
             const std::string dir = fs::canonical(candidate).parent_path().string();
             if (!rgm.resourceLocationExists(dir, group)) {
@@ -58,15 +81,12 @@ TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model,
     if (meshName.empty() || !rgm.resourceExists(group, meshName))
         throw std::runtime_error(levelPath + ": misc_model mesh '" + model.mesh + "' not found");
 
-    Ogre::MeshPtr mesh = Ogre::MeshManager::getSingleton().load(meshName, group);
-    Ogre::Entity* entity = scene.createEntity(mesh);
-    for (unsigned i = 0; i < entity->getNumSubEntities(); ++i) {
-        Ogre::SubEntity* sub = entity->getSubEntity(i);
-        const std::string& wanted = mesh->getSubMesh(i)->getMaterialName();
-        if (!Ogre::MaterialManager::getSingleton().resourceExists(wanted, group) &&
-            !Ogre::MaterialManager::getSingleton().resourceExists(wanted, Ogre::RGN_DEFAULT))
-            sub->setMaterialName(materials.resolve(wanted), group);
+    Ogre::MeshPtr mesh;
+    {
+        FallbackMaterials fallbacks(materials, group);
+        mesh = Ogre::MeshManager::getSingleton().load(meshName, group);
     }
+    Ogre::Entity* entity = scene.createEntity(mesh);
     Ogre::SceneNode* node = scene.getRootSceneNode()->createChildSceneNode(
         Ogre::Vector3(static_cast<float>(model.origin.x), static_cast<float>(model.origin.y), static_cast<float>(model.origin.z)),
         Ogre::Quaternion(Ogre::Radian(static_cast<float>(model.yaw)), Ogre::Vector3::UNIT_Y));

@@ -7,6 +7,7 @@
 #include "core/triangle_mesh.h"
 
 #include <string>
+#include <vector>
 
 namespace Ogre { class SceneManager; }
 
@@ -14,9 +15,10 @@ namespace obscura::render {
 
 class LevelMaterials;
 
-// `levelPath` resolves a relative `model` path (relative to the .map file's folder, then to the
-// working directory); a bare name is looked up in the resource group.
+// A relative `model` path is looked for in each of `searchDirs` in turn (the game passes the .map
+// file's folder, the data folder and the working directory); a bare name that is no file is
+// looked up in the resource group. `levelPath` names the level in errors.
 TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,
-                             const std::string& group, LevelMaterials& materials);
+                        const std::vector<std::string>& searchDirs, const std::string& group, LevelMaterials& materials);
 
 }  // namespace obscura::render

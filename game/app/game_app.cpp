@@ -204,8 +204,10 @@ void GameApp::createScene() {
 
     // misc_model meshes: rendered, and their triangles become static colliders.
     std::vector<TriangleMesh> modelMeshes;
+    const std::vector<std::string> modelDirs = {std::filesystem::path(settings_.level).parent_path().string(),
+                                                settings_.dataDir, std::filesystem::current_path().string()};
     for (const auto& m : level_->models)
-        modelMeshes.push_back(render::placeModel(*scene_, m, settings_.level, Ogre::RGN_DEFAULT, *materials_));
+        modelMeshes.push_back(render::placeModel(*scene_, m, settings_.level, modelDirs, Ogre::RGN_DEFAULT, *materials_));
 
     sim::SimConfig config;
     config.tickRate = settings_.tickRate;
@@ -219,7 +221,7 @@ void GameApp::createScene() {
     std::ostringstream os;
     os << "level " << settings_.level << ": " << level_->brushes.size() << " brushes, " << s.triangles
        << " triangles in " << s.batches << " batches (" << s.chunks << " chunks), " << s.lights << " lights, "
-       << materials_->generatedCount() << " generated materials; scene built in " << ms << " ms";
+       << level_->models.size() << " models, " << materials_->generatedCount() << " generated materials; scene built in " << ms << " ms";
     Ogre::LogManager::getSingleton().logMessage(os.str());
     std::cout << os.str() << "\n";
 

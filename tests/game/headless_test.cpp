@@ -108,3 +108,14 @@ TEST(Headless, HelpListsTheOptions) {
                           "--bind-forward", "--headless", "--ticks", "--screenshot", "--replay", "--timedemo"})
         EXPECT_NE(r.out.find(o), std::string::npos) << o;
 }
+
+TEST(Headless, MiscModelLoadsAMeshWithFallbackMaterials) {
+    const fs::path mesh = fs::path(OBSCURA_SHARED_DIR) / "scenes/sibenik.mesh";
+    if (!fs::exists(mesh)) GTEST_SKIP() << "no " << mesh;
+    const std::string map = temp("sibenik.map");
+    std::ofstream(map) << "{\n\"classname\" \"worldspawn\"\n}\n{\n\"classname\" \"info_player_start\"\n\"origin\" \"0 0 400\"\n}\n"
+                       << "{\n\"classname\" \"misc_model\"\n\"origin\" \"0 0 0\"\n\"model\" \"" << mesh.string() << "\"\n}\n";
+    const GameRun r = game("--headless --ticks 30 --width 64 --height 64 --level " + map);
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("1 models, 18 generated materials"), std::string::npos) << r.out;  // sibenik/* are not shipped
+}

@@ -116,3 +116,15 @@ TEST(ReplayBench, AlteredReferenceFailsWithAnHtmlReport) {
     EXPECT_NE(read(report).find("corridor: FAIL"), std::string::npos);
     EXPECT_NE(read(report).find("courtyard: pass"), std::string::npos);
 }
+
+TEST(ReplayBench, RendererThreadCountChangesNoHashAndNoPixel) {
+    // llvmpipe's rasteriser threads (LP_NUM_THREADS) must not change the simulation or the frames.
+    const std::string cmd = "'" + kGame + "' --replay '" + kScripts + "/arena_walk.replay' --capture-dir ";
+    const Result one = sh("LP_NUM_THREADS=1 " + cmd + temp("thr1"));
+    const Result four = sh("LP_NUM_THREADS=4 " + cmd + temp("thr4"));
+    ASSERT_EQ(one.code, 0) << one.out;
+    ASSERT_EQ(four.code, 0) << four.out;
+    EXPECT_EQ(finalHash(one.out), finalHash(four.out));
+    for (const char* name : {"courtyard", "corridor", "room_a"})
+        EXPECT_EQ(read(temp("thr1") + "/" + name + ".png"), read(temp("thr4") + "/" + name + ".png")) << name;
+}
