@@ -23,6 +23,7 @@ public:
     void releaseAll() { down_.clear(); }
 
     bool isDown(Action a) const;
+    bool isKeyDown(const std::string& key) const { return down_.count(key) != 0; }
     // Edge-triggered actions (cycle_ao, toggle_debug, screenshot, menu...) since the last call.
     std::vector<Action> takeTriggered();
     // The command for the next tick; consumes the accumulated mouse motion.

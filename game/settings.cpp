@@ -2,6 +2,7 @@
 #include "settings.h"
 
 #include "replay/replay_script.h"
+#include "ssao/ssao_modes.h"
 
 #include <boost/program_options.hpp>
 
@@ -156,6 +157,18 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"fov", "horizontal field of view in degrees", num(&S::fov, "fov", 40, 140)});
     I.add({"mouse-sensitivity", "mouse sensitivity (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
     I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
+    I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere (O cycles them)", [](S& s, W v, W where) {
+               if (!ssao::isMode(v)) {
+                   std::string all;
+                   for (const auto& m : ssao::modeNames()) all += (all.empty() ? "" : ", ") + m;
+                   fail(where, "ssao", "unknown mode '" + v + "', expected one of " + all);
+               }
+               s.ssao = v;
+           }});
+    // Radius 0.05..5 m: below, AO is sub-pixel at play distance; above, it darkens whole rooms.
+    I.add({"ssao-radius", "AO radius in metres", num(&S::ssaoRadius, "ssao-radius", 0.05, 5)});
+    I.add({"ssao-intensity", "AO strength", num(&S::ssaoIntensity, "ssao-intensity", 0, 4)});
+    I.add({"ssao-samples", "AO samples per pixel (1..32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
     I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});
     I.add({"ticks", "run this many simulation ticks, then exit (headless default 300)", [](S& s, W v, W where) {
                s.ticks = static_cast<long>(parseClamped(v, 0, 1e9, where, "ticks"));

@@ -40,6 +40,11 @@ struct Settings {
     double mouseSensitivity = 1.0;  // multiplies 0.022 deg per count (Quake's m_yaw)
     bool invertMouse = false;
     std::map<Action, std::string> bindings;  // action -> key name (see keyNames())
+    // Ambient occlusion (engine_ext/ssao). "off" until issue 4 picks the default by measurement.
+    std::string ssao = "off";
+    double ssaoRadius = 0.6;     // metres
+    double ssaoIntensity = 1.0;
+    int ssaoSamples = 16;
     // Headless runs
     bool headless = false;
     long ticks = 0;              // 0 = run until quit (windowed) / 300 (headless)

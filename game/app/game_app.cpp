@@ -14,6 +14,8 @@
 #include "replay/replay_recorder.h"
 #include "replay/replay_script.h"
 #include "sim/simulation.h"
+#include "ssao/ssao_compositor.h"
+#include "ssao/ssao_modes.h"
 
 #include <Ogre.h>
 #include <OgreOverlaySystem.h>
@@ -133,6 +135,7 @@ void GameApp::locateResources() {
 void GameApp::shutdown() {
     // Order matters (see shared/README): our OGRE objects first, then RTSS, overlays, root.
     hud_.reset();
+    ao_.reset();
     props_.reset();
     levelGeometry_.reset();
     materials_.reset();
@@ -225,6 +228,9 @@ void GameApp::createScene() {
     Ogre::LogManager::getSingleton().logMessage(os.str());
     std::cout << os.str() << "\n";
 
+    ao_ = std::make_unique<ssao::AmbientOcclusion>(*viewport_, *camera_, settings_.seed);
+    applyAoSettings();
+
     hud_ = std::make_unique<render::Hud>();
     hud_->setPanelVisible(settings_.showDebugPanel);
     hud_->addPanelSection("Player", [this] {
@@ -233,10 +239,36 @@ void GameApp::createScene() {
         ImGui::Text("feet %.2f %.2f %.2f", p.feet.x, p.feet.y, p.feet.z);
         ImGui::Text("speed %.2f m/s %s", std::hypot(p.velocity.x, p.velocity.z), p.onGround ? "on ground" : "in air");
     });
+    hud_->addPanelSection("Ambient occlusion", [this] {
+        ImGui::Text("mode: %s (O / Shift+O)", ao_->mode().c_str());
+        float radius = static_cast<float>(settings_.ssaoRadius), intensity = static_cast<float>(settings_.ssaoIntensity);
+        bool changed = ImGui::SliderFloat("radius (m)", &radius, 0.05f, 5.0f);
+        changed |= ImGui::SliderFloat("intensity", &intensity, 0.0f, 4.0f);
+        changed |= ImGui::SliderInt("samples", &settings_.ssaoSamples, 1, 32);
+        bool aoOnly = ao_->aoOnly();
+        if (ImGui::Checkbox("AO only", &aoOnly)) ao_->setAoOnly(aoOnly);
+        if (changed) {
+            settings_.ssaoRadius = radius;
+            settings_.ssaoIntensity = intensity;
+            applyAoSettings();
+        }
+    });
     hud_->addPanelSection("Level", [this] {
         const auto& st = levelGeometry_->stats();
         ImGui::Text("%zu batches, %zu triangles, %zu lights", st.batches, st.triangles, st.lights);
     });
+}
+
+void GameApp::applyAoSettings() {
+    ssao::AoKnobs k;
+    k.radius = settings_.ssaoRadius;
+    k.intensity = settings_.ssaoIntensity;
+    k.samples = settings_.ssaoSamples;
+    ao_->setKnobs(k);
+    if (!ao_->setMode(settings_.ssao)) {
+        std::cerr << "obscura: AO mode '" << settings_.ssao << "' cannot run on this GPU/driver (see the log); AO off\n";
+        settings_.ssao = "off";
+    }
 }
 
 void GameApp::stepSimulation() {
@@ -259,7 +291,13 @@ void GameApp::handleTriggeredActions() {
                 setWindowGrab(mouseGrabbed_);
                 break;
             case Action::Screenshot: writeScreenshot("obscura-" + std::to_string(sim_->tick()) + ".png"); break;
-            default: break;  // movement actions are read as held states; cycle_ao etc. arrive with their issues
+            case Action::CycleAo:
+                // Shift+O steps backwards.
+                settings_.ssao = ssao::cycleMode(settings_.ssao, input_.isKeyDown("lshift") || input_.isKeyDown("rshift") ? -1 : 1);
+                applyAoSettings();
+                break;
+            case Action::AoOnlyView: ao_->setAoOnly(!ao_->aoOnly()); break;
+            default: break;  // movement actions are read as held states
         }
     }
 }
@@ -286,6 +324,7 @@ void GameApp::renderFrame(double frameMs) {
     render::HudState hs;
     hs.frameMs = frameMs;
     hs.frameMsIsFixed = settings_.headless;
+    hs.status.push_back("AO: " + ao_->mode() + (ao_->aoOnly() ? " (AO only)" : ""));
     hud_->update(hs);
     mRoot->renderOneFrame();
 }
@@ -459,6 +498,8 @@ void GameApp::applySetting(const std::string& key, const std::string& value, con
     if (key == "fov") {
         const double aspect = camera_->getAspectRatio();
         camera_->setFOVy(Ogre::Radian(static_cast<Ogre::Real>(2.0 * std::atan(std::tan(degToRad(settings_.fov) * 0.5) / aspect))));
+    } else if (key.rfind("ssao", 0) == 0) {
+        applyAoSettings();
     } else if (key == "debug-panel") {
         hud_->setPanelVisible(settings_.showDebugPanel);
     }

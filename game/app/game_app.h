@@ -26,6 +26,7 @@ namespace map { struct Level; }
 namespace sim { class Simulation; struct PlayerState; }
 namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; }
 namespace replay { struct Script; class Recorder; }
+namespace ssao { class AmbientOcclusion; }
 
 class GameApp : public OgreBites::ApplicationContext, public OgreBites::InputListener {
 public:
@@ -86,6 +87,8 @@ private:
     std::unique_ptr<render::LevelGeometry> levelGeometry_;
     std::unique_ptr<render::PropView> props_;
     std::unique_ptr<render::Hud> hud_;
+    std::unique_ptr<ssao::AmbientOcclusion> ao_;
+    void applyAoSettings();
 
     std::unique_ptr<replay::Script> script_;      // --replay / --timedemo
     std::unique_ptr<replay::Recorder> recorder_;  // --record

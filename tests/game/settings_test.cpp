@@ -105,3 +105,13 @@ TEST(Settings, RuntimeApplyUsesTheSameTable) {
         EXPECT_NE(std::string(e.what()).find("x.replay:9"), std::string::npos);
     }
 }
+
+TEST(Settings, AoModeIsValidatedAndCycles) {
+    Settings s;
+    ASSERT_TRUE(parseArgs({"--ssao", "crytek", "--ssao-radius", "0.8", "--ssao-samples", "64"}, s));
+    EXPECT_EQ(s.ssao, "crytek");
+    EXPECT_DOUBLE_EQ(s.ssaoRadius, 0.8);
+    EXPECT_EQ(s.ssaoSamples, 32);  // clamped with a warning
+    EXPECT_NE(errorOf({"--ssao", "hbao++"}).find("unknown mode 'hbao++', expected one of off, crytek, hemisphere"),
+              std::string::npos);
+}

@@ -1,0 +1,15 @@
+// The AO modes O cycles through, in order. Plain C++ so settings and replays can validate names.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace obscura::ssao {
+
+// "off", then one name per compositor in media/ssao/ssao.compositor.
+const std::vector<std::string>& modeNames();
+bool isMode(const std::string& name);
+// The next (step +1) or previous (step -1) mode, wrapping around.
+std::string cycleMode(const std::string& current, int step);
+
+}  // namespace obscura::ssao

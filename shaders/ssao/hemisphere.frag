@@ -1,0 +1,24 @@
+#version 330 core
+// Normal-oriented hemisphere SSAO (gamerendering.com, after Crysis/StarCraft II; seed a): the
+// energy-minimised hemisphere kernel (engine_ext/ssao/ssao_kernel.h) is rotated about the surface
+// normal by a per-pixel random vector (Gram-Schmidt frame), so no sample lies behind the surface.
+#include "ssao_common.glsl"
+in vec2 vUv;
+out vec4 fragColour;
+void main()
+{
+    vec4 p = texture(gbufferPosition, vUv);
+    if (p.w < 0.5) { fragColour = vec4(1.0); return; }
+    vec3 n = normalize(texture(gbufferNormal, vUv).xyz);
+    vec3 rnd = pixelNoise();
+    vec3 t = normalize(rnd - n * dot(rnd, n));
+    mat3 tbn = mat3(t, cross(n, t), n);
+    int count = int(sampleCount);
+    float occ = 0.0;
+    for (int i = 0; i < 32; ++i) {
+        if (i >= count) break;
+        occ += occluderAt(p.xyz + tbn * kernel[i] * radius, p.z);
+    }
+    float ao = 1.0 - intensity * occ / float(count);
+    fragColour = vec4(vec3(clamp(ao, 0.0, 1.0)), 1.0);
+}

@@ -1,0 +1,19 @@
+#include <gtest/gtest.h>
+
+#include "ssao/ssao_modes.h"
+
+using namespace obscura::ssao;
+
+TEST(SsaoModes, CycleForwardAndBackWraps) {
+    const auto& m = modeNames();
+    ASSERT_GE(m.size(), 3u);
+    EXPECT_EQ(m.front(), "off");
+    std::string mode = "off";
+    for (std::size_t i = 0; i < m.size(); ++i) mode = cycleMode(mode, +1);
+    EXPECT_EQ(mode, "off");  // a full turn comes back
+    EXPECT_EQ(cycleMode("off", -1), m.back());
+    EXPECT_EQ(cycleMode(m[1], -1), "off");
+    EXPECT_EQ(cycleMode("nonsense", +1), m[1]);
+    EXPECT_TRUE(isMode("hemisphere"));
+    EXPECT_FALSE(isMode("Hemisphere"));
+}
