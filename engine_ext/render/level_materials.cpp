@@ -57,7 +57,9 @@ const std::string& LevelMaterials::resolve(const std::string& texture) {
     Ogre::MaterialPtr base = mm.getByName("Obscura/Level", group_);
     if (!base) throw std::runtime_error("material Obscura/Level is missing (media/materials/level.material)");
     Ogre::MaterialPtr mat = base->clone(name);
-    mat->getTechnique(0)->getPass(0)->getTextureUnitState(0)->setTextureName(name);
+    // Every technique (the lit one and the AO G-buffer one) samples the albedo.
+    for (auto* tech : mat->getTechniques())
+        if (auto* unit = tech->getPass(0)->getTextureUnitState("albedo")) unit->setTextureName(name);
     generatedMaterials_.push_back(mat);
     return cache_[key] = name;
 }
