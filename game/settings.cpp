@@ -168,6 +168,10 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     // Radius 0.05..5 m: below, AO is sub-pixel at play distance; above, it darkens whole rooms.
     I.add({"ssao-radius", "AO radius in metres", num(&S::ssaoRadius, "ssao-radius", 0.05, 5)});
     I.add({"ssao-intensity", "AO strength", num(&S::ssaoIntensity, "ssao-intensity", 0, 4)});
+    I.add({"ssao-resolution", "AO buffer resolution: half or full", [](S& s, W v, W where) {
+               if (v != "half" && v != "full") fail(where, "ssao-resolution", "'" + v + "', expected half or full");
+               s.ssaoHalfResolution = v == "half";
+           }});
     I.add({"ssao-samples", "AO samples per pixel (1..32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
     I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});
     I.add({"ticks", "run this many simulation ticks, then exit (headless default 300)", [](S& s, W v, W where) {

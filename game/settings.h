@@ -45,6 +45,7 @@ struct Settings {
     double ssaoRadius = 0.6;     // metres
     double ssaoIntensity = 1.0;
     int ssaoSamples = 16;
+    bool ssaoHalfResolution = true;
     // Headless runs
     bool headless = false;
     long ticks = 0;              // 0 = run until quit (windowed) / 300 (headless)

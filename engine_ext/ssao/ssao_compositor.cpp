@@ -76,12 +76,19 @@ void AmbientOcclusion::removeCompositors() {
 }
 
 bool AmbientOcclusion::setMode(const std::string& mode) {
-    if (mode == mode_) return true;
+    if (mode == mode_ && halfResolution_ == knobs_.halfResolution) return true;
     removeCompositors();
+    halfResolution_ = knobs_.halfResolution;
     mode_ = "off";
     if (mode == "off") return true;
     auto& cm = Ogre::CompositorManager::getSingleton();
     for (const std::string& name : {std::string("Obscura/SSAO/GBuffer"), compositorFor(mode)}) {
+        // The AO buffers' size is the one knob the script leaves to code.
+        if (auto comp = cm.getByName(name, Ogre::RGN_DEFAULT))
+            for (size_t t = 0; t < comp->getNumTechniques(); ++t)
+                for (const char* buffer : {"ao", "blurX", "blurY"})
+                    if (auto* def = comp->getTechnique(t)->getTextureDefinition(buffer))
+                        def->widthFactor = def->heightFactor = halfResolution_ ? 0.5f : 1.0f;
         Ogre::CompositorInstance* inst = cm.addCompositor(&viewport_, name);
         if (!inst) {
             Ogre::LogManager::getSingleton().logError("AO mode '" + mode + "': compositor " + name +

@@ -22,6 +22,7 @@ struct AoKnobs {
     double radius = 0.6;      // metres: about a hand's span, where contact shadows read
     double intensity = 1.0;
     int samples = 16;         // 16: the seeds' 10-16, at half resolution
+    bool halfResolution = true;  // AO computed at half width and height, then blurred up
 };
 
 class AmbientOcclusion : public Ogre::CompositorInstance::Listener, public Ogre::MaterialManager::Listener {
@@ -35,6 +36,7 @@ public:
     // returns false (the reason is in the log).
     bool setMode(const std::string& mode);
     const std::string& mode() const { return mode_; }
+    // Radius, intensity and samples apply at the next frame; the resolution at the next setMode.
     void setKnobs(const AoKnobs& k) { knobs_ = k; }
     void setAoOnly(bool on) { aoOnly_ = on; }
     bool aoOnly() const { return aoOnly_; }
@@ -59,6 +61,7 @@ private:
     std::string mode_ = "off";
     AoKnobs knobs_;
     bool aoOnly_ = false;
+    bool halfResolution_ = true;
 };
 
 }  // namespace obscura::ssao

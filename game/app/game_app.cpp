@@ -264,6 +264,7 @@ void GameApp::applyAoSettings() {
     k.radius = settings_.ssaoRadius;
     k.intensity = settings_.ssaoIntensity;
     k.samples = settings_.ssaoSamples;
+    k.halfResolution = settings_.ssaoHalfResolution;
     ao_->setKnobs(k);
     if (!ao_->setMode(settings_.ssao)) {
         std::cerr << "obscura: AO mode '" << settings_.ssao << "' cannot run on this GPU/driver (see the log); AO off\n";

@@ -1,7 +1,7 @@
 #version 330 core
 // Depth-aware (cross-bilateral) blur of the AO term: a 5-tap line along `direction` (separable:
 // run horizontally, then vertically), each tap weighted down by its depth difference from the
-// centre so occlusion does not bleed across silhouettes. Also upsamples a half-resolution AO.
+// centre so occlusion does not bleed across silhouettes. Runs at the AO's resolution.
 uniform sampler2D aoMap;
 uniform sampler2D gbufferPosition;
 uniform vec2 direction;        // one texel of aoMap along x or y
