@@ -108,7 +108,7 @@ struct Option {
 };
 
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
-const char* const kStartupOnly[] = {"level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
+const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
                                     "timedemo", "config", "data-dir", "log"};
 
@@ -172,6 +172,7 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                if (v != "half" && v != "full") fail(where, "ssao-resolution", "'" + v + "', expected half or full");
                s.ssaoHalfResolution = v == "half";
            }});
+    I.add({"ao-only", "show the AO term alone", flag(&S::aoOnly, "ao-only"), true});
     I.add({"ssao-samples", "AO samples per pixel (1..32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
     I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});
     I.add({"ticks", "run this many simulation ticks, then exit (headless default 300)", [](S& s, W v, W where) {
@@ -185,6 +186,15 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"config", "config file of 'key = value' lines (same names as these options)", str(&S::configFile)});
     I.add({"data-dir", "folder holding media/ and shaders/", str(&S::dataDir)});
     I.add({"log", "OGRE log file (default: obscura.log in the cache folder)", str(&S::logFile)});
+    I.add({"hud", "draw the crosshair and status text", flag(&S::hud, "hud"), true});
+    I.add({"start-pose", "start with the eye at 'x y z yaw pitch' (metres, degrees) instead of the player start",
+           [](S& s, W v, W where) {
+               std::istringstream is(v);
+               double d[5];
+               for (double& x : d)
+                   if (!(is >> x)) fail(where, "start-pose", "'" + v + "', expected 'x y z yaw pitch'");
+               s.startPose = v;
+           }});
     I.add({"debug-panel", "show the ImGui debug panel at start", flag(&S::showDebugPanel, "debug-panel"), true});
     for (int a = 0; a < static_cast<int>(Action::Count); ++a) {
         const auto action = static_cast<Action>(a);

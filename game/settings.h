@@ -46,6 +46,7 @@ struct Settings {
     double ssaoIntensity = 1.0;
     int ssaoSamples = 16;
     bool ssaoHalfResolution = true;
+    bool aoOnly = false;         // show the AO term alone (P toggles it)
     // Headless runs
     bool headless = false;
     long ticks = 0;              // 0 = run until quit (windowed) / 300 (headless)
@@ -60,6 +61,10 @@ struct Settings {
     std::string dataDir;         // holds media/ and shaders/
     std::string logFile;
     bool showDebugPanel = false;
+    bool hud = true;             // crosshair and status text (off for AO comparisons)
+    // Start the player's eye here instead of the level's player start: x y z (metres, world),
+    // yaw pitch (degrees, the game's convention). Empty: the level's start.
+    std::string startPose;
 
     Settings();  // fills default bindings
 };

@@ -9,6 +9,8 @@ PACKAGES=(
   # engine and libraries
   libogre-1.12-dev libbullet-dev libopenal-dev libsdl2-dev libboost-program-options-dev
   libimgui-dev libpng-dev
+  # the ray-traced AO reference (tools/aoref)
+  libembree-dev
   # tests
   googletest libgtest-dev
   # headless rendering: Xvfb + Mesa llvmpipe

@@ -28,6 +28,10 @@ void Hud::update(const HudState& state) {
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 centre(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f);
 
+    if (!state.visible) {
+        if (panelVisible_) drawPanel();
+        return;
+    }
     // Crosshair: four short strokes with a dark outline so it reads on bright and dark walls.
     ImDrawList* dl = ImGui::GetForegroundDrawList();
     const float gap = 4.0f, len = 8.0f;
@@ -50,13 +54,15 @@ void Hud::update(const HudState& state) {
         dl->AddText(pos, IM_COL32(255, 240, 200, 255), s.c_str());
     }
 
-    if (panelVisible_) {
-        ImGui::SetNextWindowPos(ImVec2(10, 60), ImGuiCond_FirstUseEver);
-        ImGui::Begin("Obscura debug", &panelVisible_, ImGuiWindowFlags_AlwaysAutoResize);
-        for (const auto& [title, draw] : sections_)
-            if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) draw();
-        ImGui::End();
-    }
+    if (panelVisible_) drawPanel();
+}
+
+void Hud::drawPanel() {
+    ImGui::SetNextWindowPos(ImVec2(10, 60), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Obscura debug", &panelVisible_, ImGuiWindowFlags_AlwaysAutoResize);
+    for (const auto& [title, draw] : sections_)
+        if (ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) draw();
+    ImGui::End();
 }
 
 }  // namespace obscura::render

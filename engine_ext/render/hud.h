@@ -15,6 +15,7 @@ class OverlaySystem;
 namespace obscura::render {
 
 struct HudState {
+    bool visible = true;     // crosshair and text (the debug panel follows its own toggle)
     double frameMs = 0;      // shown as the frame time
     bool frameMsIsFixed = false;  // headless runs show the fixed tick time so captures are repeatable
     std::vector<std::string> status;  // extra lines under the frame time (AO mode, ...)
@@ -36,6 +37,7 @@ public:
     void update(const HudState& state);
 
 private:
+    void drawPanel();
     Ogre::ImGuiOverlay* overlay_ = nullptr;  // owned by OGRE's OverlayManager once added
     bool panelVisible_ = false;
     std::vector<std::pair<std::string, std::function<void()>>> sections_;

@@ -215,6 +215,16 @@ void GameApp::createScene() {
     sim::SimConfig config;
     config.tickRate = settings_.tickRate;
     config.seed = settings_.seed;
+    if (!settings_.startPose.empty()) {
+        std::istringstream is(settings_.startPose);
+        double x, y, z, yaw, pitch;
+        is >> x >> y >> z >> yaw >> pitch;
+        config.overrideStart = true;
+        const sim::PlayerTuning standing;
+        config.startFeet = {x, y - (standing.standHeight - standing.eyeBelowTop), z};
+        config.startYaw = degToRad(yaw);
+        config.startPitch = degToRad(pitch);
+    }
     sim_ = std::make_unique<sim::Simulation>(*level_, config, modelMeshes);
     previousPlayer_ = std::make_unique<sim::PlayerState>(sim_->player());
     props_ = std::make_unique<render::PropView>(*scene_, *materials_);
@@ -246,7 +256,7 @@ void GameApp::createScene() {
         changed |= ImGui::SliderFloat("intensity", &intensity, 0.0f, 4.0f);
         changed |= ImGui::SliderInt("samples", &settings_.ssaoSamples, 1, 32);
         bool aoOnly = ao_->aoOnly();
-        if (ImGui::Checkbox("AO only", &aoOnly)) ao_->setAoOnly(aoOnly);
+        if (ImGui::Checkbox("AO only", &aoOnly)) ao_->setAoOnly(settings_.aoOnly = aoOnly);
         if (changed) {
             settings_.ssaoRadius = radius;
             settings_.ssaoIntensity = intensity;
@@ -266,6 +276,7 @@ void GameApp::applyAoSettings() {
     k.samples = settings_.ssaoSamples;
     k.halfResolution = settings_.ssaoHalfResolution;
     ao_->setKnobs(k);
+    ao_->setAoOnly(settings_.aoOnly);
     if (!ao_->setMode(settings_.ssao)) {
         std::cerr << "obscura: AO mode '" << settings_.ssao << "' cannot run on this GPU/driver (see the log); AO off\n";
         settings_.ssao = "off";
@@ -297,7 +308,10 @@ void GameApp::handleTriggeredActions() {
                 settings_.ssao = ssao::cycleMode(settings_.ssao, input_.isKeyDown("lshift") || input_.isKeyDown("rshift") ? -1 : 1);
                 applyAoSettings();
                 break;
-            case Action::AoOnlyView: ao_->setAoOnly(!ao_->aoOnly()); break;
+            case Action::AoOnlyView:
+                settings_.aoOnly = !settings_.aoOnly;
+                ao_->setAoOnly(settings_.aoOnly);
+                break;
             default: break;  // movement actions are read as held states
         }
     }
@@ -323,6 +337,7 @@ void GameApp::updateView(double alpha) {
 
 void GameApp::renderFrame(double frameMs) {
     render::HudState hs;
+    hs.visible = settings_.hud;
     hs.frameMs = frameMs;
     hs.frameMsIsFixed = settings_.headless;
     hs.status.push_back("AO: " + ao_->mode() + (ao_->aoOnly() ? " (AO only)" : ""));
@@ -499,7 +514,7 @@ void GameApp::applySetting(const std::string& key, const std::string& value, con
     if (key == "fov") {
         const double aspect = camera_->getAspectRatio();
         camera_->setFOVy(Ogre::Radian(static_cast<Ogre::Real>(2.0 * std::atan(std::tan(degToRad(settings_.fov) * 0.5) / aspect))));
-    } else if (key.rfind("ssao", 0) == 0) {
+    } else if (key.rfind("ssao", 0) == 0 || key == "ao-only") {
         applyAoSettings();
     } else if (key == "debug-panel") {
         hud_->setPanelVisible(settings_.showDebugPanel);

@@ -32,8 +32,9 @@ Simulation::Simulation(const map::Level& level, const SimConfig& config, const s
         physics_->addDynamicBox(e.origin + Vec3{0, h, 0}, {h, h, h}, mass, e.yaw);
     }
     controller_ = std::make_unique<PlayerController>(*physics_, tuning);
-    player_.feet = level.hasPlayerStart ? level.playerStart : Vec3{};
-    player_.yaw = static_cast<float>(level.playerStartYaw);
+    player_.feet = config.overrideStart ? config.startFeet : level.hasPlayerStart ? level.playerStart : Vec3{};
+    player_.yaw = static_cast<float>(config.overrideStart ? config.startYaw : level.playerStartYaw);
+    player_.pitch = static_cast<float>(config.overrideStart ? config.startPitch : 0.0);
     player_.height = static_cast<float>(tuning.standHeight);
     player_.eyeBelowTop = static_cast<float>(tuning.eyeBelowTop);
 }

@@ -21,6 +21,9 @@ using obscura::TriangleMesh;
 struct SimConfig {
     double tickRate = 60;  // ticks per second
     std::uint64_t seed = 1;
+    bool overrideStart = false;  // start at startFeet/startYaw/startPitch instead of the level's start
+    Vec3 startFeet;
+    double startYaw = 0, startPitch = 0;
 };
 
 struct BodyPose {

@@ -1,0 +1,46 @@
+// Ray-traced ambient-occlusion reference (Embree 3, CPU): the truth the screen-space modes are
+// judged against. For each pixel of a pinhole camera it finds the visible surface and shoots
+// `rays` cosine-weighted rays into its hemisphere; AO = the share of rays that travel `radius`
+// metres without hitting anything — the same quantity the SSAO modes estimate.
+// Deterministic: each pixel's rays come from an Rng seeded by the pixel index, so any thread
+// count gives the same image.
+#pragma once
+
+#include "core/triangle_mesh.h"
+#include "core/vec3.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace obscura::ssao {
+
+struct CameraPose {
+    Vec3 eye;
+    double yaw = 0, pitch = 0;  // radians; the game's convention (yaw about +Y, 0 faces -Z)
+    double fovX = 90;           // horizontal field of view, degrees
+};
+
+struct AoImage {
+    int width = 0, height = 0;
+    std::vector<float> ao;  // row-major, top row first; 1 = unoccluded (and for sky pixels)
+    std::vector<std::uint8_t> hit;  // 1 where the pixel sees geometry
+};
+
+class AoReference {
+public:
+    explicit AoReference(const std::vector<TriangleMesh>& meshes);
+    ~AoReference();
+    AoReference(const AoReference&) = delete;
+    AoReference& operator=(const AoReference&) = delete;
+
+    AoImage render(const CameraPose& pose, int width, int height, double radius, int rays, int threads = 2) const;
+    // AO at one surface point with its normal (exposed for tests).
+    double aoAt(const Vec3& point, const Vec3& normal, double radius, int rays, std::uint64_t seed) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace obscura::ssao

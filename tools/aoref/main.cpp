@@ -1,0 +1,98 @@
+// obscura_aoref: the ray-traced AO reference of a level view (engine_ext/ssao/ao_reference.h),
+// written as a grey PNG, and optionally compared with the game's AO-only capture of the same view.
+//
+//   obscura_aoref --level L --pose "x y z yaw pitch" [--fov 90] [--width 320] [--height 180]
+//                 [--radius 0.6] [--rays 256] --out ref.png [--compare game_ao.png]
+//
+// The game side: obscura --headless --start-pose "..." --hud off --ssao MODE, AO-only view (P).
+// Prints "aoref mae=... rmse=... bias=... pixels=..." over the pixels that see geometry.
+#include "core/image.h"
+#include "map/map_compile.h"
+#include "ssao/ao_reference.h"
+
+#include <boost/program_options.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace po = boost::program_options;
+using namespace obscura;
+
+namespace {
+// Visible, non-sky brush faces as triangles: what the game renders into its G-buffer.
+std::vector<TriangleMesh> levelTriangles(const map::Level& level) {
+    TriangleMesh m;
+    for (const auto& b : level.brushes)
+        for (const auto& f : b.faces) {
+            if (!f.visible || f.texture.rfind("sky", 0) == 0) continue;
+            const auto base = static_cast<std::uint32_t>(m.vertices.size());
+            for (const auto& v : f.vertices) m.vertices.push_back(v.position);
+            for (std::uint32_t i = 1; i + 1 < f.vertices.size(); ++i)
+                m.indices.insert(m.indices.end(), {base, base + i, base + i + 1});
+        }
+    return {m};
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string levelPath, poseText, out, compare;
+    int width = 320, height = 180, rays = 256;
+    double fov = 90, radius = 0.6;
+    po::options_description desc("obscura_aoref options");
+    desc.add_options()("level", po::value(&levelPath)->required(), ".map level")
+        ("pose", po::value(&poseText)->required(), "eye 'x y z yaw pitch' (metres, degrees)")
+        ("fov", po::value(&fov), "horizontal field of view, degrees (90)")("width", po::value(&width), "")
+        ("height", po::value(&height), "")("radius", po::value(&radius), "AO radius, metres (0.6)")
+        ("rays", po::value(&rays), "rays per pixel (256)")("out", po::value(&out)->required(), "reference PNG")
+        ("compare", po::value(&compare), "the game's AO-only capture of the same view");
+    try {
+        po::variables_map vm;
+        po::store(po::parse_command_line(argc, argv, desc), vm);
+        po::notify(vm);
+        std::istringstream is(poseText);
+        ssao::CameraPose pose;
+        double yaw, pitch;
+        if (!(is >> pose.eye.x >> pose.eye.y >> pose.eye.z >> yaw >> pitch)) throw po::error("--pose needs 'x y z yaw pitch'");
+        pose.yaw = yaw * 3.14159265358979323846 / 180.0;
+        pose.pitch = pitch * 3.14159265358979323846 / 180.0;
+        pose.fovX = fov;
+
+        const map::Level level = map::loadLevel(levelPath);
+        const ssao::AoReference ref(levelTriangles(level));
+        const auto t0 = std::chrono::steady_clock::now();
+        const ssao::AoImage img = ref.render(pose, width, height, radius, rays, 2);
+        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+        Image png{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4, 255)};
+        for (std::size_t i = 0; i < img.ao.size(); ++i)
+            for (int c = 0; c < 3; ++c) png.rgba[i * 4 + c] = static_cast<std::uint8_t>(std::lround(img.ao[i] * 255.0f));
+        writePng(png, out);
+        std::cerr << "aoref: " << width << "x" << height << " x " << rays << " rays in " << secs << " s\n";
+
+        if (!compare.empty()) {
+            const Image game = readPng(compare);
+            if (game.width != width || game.height != height) throw std::runtime_error(compare + ": size differs from the reference");
+            double sum = 0, sum2 = 0, bias = 0;
+            long n = 0;
+            for (std::size_t i = 0; i < img.ao.size(); ++i) {
+                if (!img.hit[i]) continue;
+                const double d = game.rgba[i * 4] / 255.0 - img.ao[i];
+                sum += std::fabs(d);
+                sum2 += d * d;
+                bias += d;
+                ++n;
+            }
+            std::cout << "aoref mae=" << (n ? sum / n : 0) << " rmse=" << (n ? std::sqrt(sum2 / n) : 0)
+                      << " bias=" << (n ? bias / n : 0) << " pixels=" << n << "\n";
+        }
+    } catch (const po::error& e) {
+        std::cerr << "obscura_aoref: " << e.what() << "\n" << desc;
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "obscura_aoref: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
