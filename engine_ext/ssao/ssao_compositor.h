@@ -20,7 +20,7 @@ namespace obscura::ssao {
 
 struct AoKnobs {
     double radius = 0.6;      // metres: about a hand's span, where contact shadows read
-    double intensity = 1.0;
+    double intensity = 2.0;   // see game/settings.h
     int samples = 16;         // 16: the seeds' 10-16, at half resolution
     bool halfResolution = true;  // AO computed at half width and height, then blurred up
 };

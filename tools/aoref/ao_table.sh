@@ -9,7 +9,7 @@ game=build/game/obscura
 ref=build/tools/aoref/obscura_aoref
 out=build/ao_table
 mkdir -p "$out"
-W=320; H=180; R=0.6
+W=320; H=180; R=${RADIUS:-0.6}; I=${INTENSITY:-2}  # knobs: RADIUS=, INTENSITY= in the environment
 # name | level | eye "x y z yaw pitch" (metres, degrees)
 views=(
   "courtyard|media/levels/arena.map|26 1.65 -24 -30 -10"
@@ -19,14 +19,14 @@ views=(
   "e3m4_start|../shared/maps/librequake/e3m4.map|30 46.15 10.5 0 -10"
   "e3m4_corridor|../shared/maps/librequake/e3m4.map|30 46.15 5 30 -20"
 )
-modes=(crytek hemisphere)
+modes=(crytek hemisphere horizon)
 printf '| view | mode | MAE | RMSE | bias |\n|---|---|---|---|---|\n'
 for v in "${views[@]}"; do
   IFS='|' read -r name level pose <<<"$v"
   [ -f "$level" ] || { echo "| $name | (no $level) | | | |"; continue; }
   for m in "${modes[@]}"; do
     "$game" --headless --ticks 1 --width $W --height $H --level "$level" --start-pose "$pose" --hud off \
-      --ssao "$m" --ssao-radius $R --ao-only --screenshot "$out/${name}_$m.png" >/dev/null
+      --ssao "$m" --ssao-radius $R --ssao-intensity $I --ao-only --screenshot "$out/${name}_$m.png" >/dev/null
     line=$("$ref" --level "$level" --pose "$pose" --width $W --height $H --radius $R --rays 256 \
       --out "$out/${name}_reference.png" --compare "$out/${name}_$m.png" 2>/dev/null)
     read -r _ mae rmse bias _ <<<"$line"
