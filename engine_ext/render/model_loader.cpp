@@ -87,18 +87,28 @@ TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model,
         mesh = Ogre::MeshManager::getSingleton().load(meshName, group);
     }
     Ogre::Entity* entity = scene.createEntity(mesh);
-    Ogre::SceneNode* node = scene.getRootSceneNode()->createChildSceneNode(
-        Ogre::Vector3(static_cast<float>(model.origin.x), static_cast<float>(model.origin.y), static_cast<float>(model.origin.z)),
-        Ogre::Quaternion(Ogre::Radian(static_cast<float>(model.yaw)), Ogre::Vector3::UNIT_Y));
-    node->setScale(Ogre::Vector3(static_cast<float>(model.scale)));
+    const Ogre::Affine3 xf = modelTransform(model);
+    Ogre::Vector3 position, scale;
+    Ogre::Quaternion orientation;
+    xf.decomposition(position, scale, orientation);
+    Ogre::SceneNode* node = scene.getRootSceneNode()->createChildSceneNode(position, orientation);
+    node->setScale(scale);
     node->attachObject(entity);
-    node->_update(true, false);
+    return meshTriangles(*mesh, modelTransform(model));
+}
 
+Ogre::Affine3 modelTransform(const map::LevelModel& model) {
+    const Ogre::Vector3 origin(static_cast<float>(model.origin.x), static_cast<float>(model.origin.y),
+                               static_cast<float>(model.origin.z));
+    const Ogre::Quaternion yaw(Ogre::Radian(static_cast<float>(model.yaw)), Ogre::Vector3::UNIT_Y);
+    return Ogre::Affine3(origin, yaw, Ogre::Vector3(static_cast<float>(model.scale)));
+}
+
+TriangleMesh meshTriangles(const Ogre::Mesh& mesh, const Ogre::Affine3& xf) {
     TriangleMesh tris;
-    const Ogre::Affine3 xf = node->_getFullTransform();
-    for (unsigned i = 0; i < mesh->getNumSubMeshes(); ++i) {
-        const Ogre::SubMesh* sm = mesh->getSubMesh(i);
-        appendTriangles(sm->useSharedVertices ? mesh->sharedVertexData : sm->vertexData, sm->indexData, xf, tris);
+    for (unsigned i = 0; i < mesh.getNumSubMeshes(); ++i) {
+        const Ogre::SubMesh* sm = mesh.getSubMesh(i);
+        appendTriangles(sm->useSharedVertices ? mesh.sharedVertexData : sm->vertexData, sm->indexData, xf, tris);
     }
     return tris;
 }

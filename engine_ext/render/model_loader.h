@@ -9,7 +9,12 @@
 #include <string>
 #include <vector>
 
-namespace Ogre { class SceneManager; }
+#include <OgreMatrix4.h>
+
+namespace Ogre {
+class Mesh;
+class SceneManager;
+}  // namespace Ogre
 
 namespace obscura::render {
 
@@ -18,6 +23,11 @@ class LevelMaterials;
 // A relative `model` path is looked for in each of `searchDirs` in turn (the game passes the .map
 // file's folder, the data folder and the working directory); a bare name that is no file is
 // looked up in the resource group. `levelPath` names the level in errors.
+// The model's world transform: translate(origin) * rotateY(yaw) * scale.
+Ogre::Affine3 modelTransform(const map::LevelModel& model);
+// Every submesh's triangles, transformed (shared by the game's colliders and tools/aoref).
+TriangleMesh meshTriangles(const Ogre::Mesh& mesh, const Ogre::Affine3& transform);
+
 TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,
                         const std::vector<std::string>& searchDirs, const std::string& group, LevelMaterials& materials);
 

@@ -18,6 +18,8 @@ views=(
   "wall_off_screen|media/levels/arena.map|43 1.65 -30 90 -35"
   "e3m4_start|../shared/maps/librequake/e3m4.map|30 46.15 10.5 0 -10"
   "e3m4_corridor|../shared/maps/librequake/e3m4.map|30 46.15 5 30 -20"
+  "sibenik_nave|tests/ssao/views/sibenik.map|0 1.65 0 90 0"
+  "sibenik_pillars|tests/ssao/views/sibenik.map|0 1.65 0 -90 -10"
 )
 modes=(crytek hemisphere horizon)
 printf '| view | mode | MAE | RMSE | bias |\n|---|---|---|---|---|\n'

@@ -8,11 +8,16 @@
 // Prints "aoref mae=... rmse=... bias=... pixels=..." over the pixels that see geometry.
 #include "core/image.h"
 #include "map/map_compile.h"
+#include "render/model_loader.h"
 #include "ssao/ao_reference.h"
+
+#include <Ogre.h>
+#include <OgreDefaultHardwareBufferManager.h>
 
 #include <boost/program_options.hpp>
 
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -33,6 +38,39 @@ std::vector<TriangleMesh> levelTriangles(const map::Level& level) {
                 m.indices.insert(m.indices.end(), {base, base + i, base + i + 1});
         }
     return {m};
+}
+
+// misc_model meshes through OGRE without a render system (software buffers), placed exactly as
+// the game places them (render::modelTransform).
+void addModelTriangles(const map::Level& level, const std::vector<std::string>& searchDirs, std::vector<TriangleMesh>& out) {
+    if (level.models.empty()) return;
+    auto* logs = new Ogre::LogManager();
+    logs->createLog("aoref-ogre.log", true, false, true);  // suppress output: warnings about materials
+    {
+    Ogre::Root root("", "", "");
+    Ogre::DefaultHardwareBufferManager buffers;
+    auto& rgm = Ogre::ResourceGroupManager::getSingleton();
+    for (const auto& m : level.models) {
+        namespace fs = std::filesystem;
+        fs::path file;
+        for (const auto& dir : searchDirs)
+            if (fs::is_regular_file(fs::path(dir) / m.mesh)) {
+                file = fs::canonical(fs::path(dir) / m.mesh);
+                break;
+            }
+        if (file.empty()) throw std::runtime_error(level.sourcePath + ": misc_model mesh '" + m.mesh + "' not found");
+        const std::string group = "AoRefModels";
+        if (!rgm.resourceGroupExists(group)) rgm.createResourceGroup(group);
+        rgm.addResourceLocation(file.parent_path().string(), "FileSystem", group);
+        rgm.initialiseResourceGroup(group);
+        Ogre::MeshPtr mesh = Ogre::MeshManager::getSingleton().load(file.filename().string(), group);
+        out.push_back(render::meshTriangles(*mesh, render::modelTransform(m)));
+        const auto& b = mesh->getBounds();
+        std::cerr << "aoref: model " << m.mesh << " bounds " << b.getMinimum() << " .. " << b.getMaximum() << "\n";
+    }
+    Ogre::MeshManager::getSingleton().removeAll();
+    }  // the root goes before its log
+    delete logs;
 }
 }  // namespace
 
@@ -60,7 +98,9 @@ int main(int argc, char** argv) {
         pose.fovX = fov;
 
         const map::Level level = map::loadLevel(levelPath);
-        const ssao::AoReference ref(levelTriangles(level));
+        auto triangles = levelTriangles(level);
+        addModelTriangles(level, {std::filesystem::path(levelPath).parent_path().string(), OBSCURA_DATA_DIR, "."}, triangles);
+        const ssao::AoReference ref(triangles);
         const auto t0 = std::chrono::steady_clock::now();
         const ssao::AoImage img = ref.render(pose, width, height, radius, rays, 2);
         const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
