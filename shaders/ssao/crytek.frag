@@ -8,7 +8,7 @@ in vec2 vUv;
 out vec4 fragColour;
 void main()
 {
-    vec4 p = texture(gbufferPosition, vUv);
+    vec4 p = viewPosition(vUv);
     if (p.w < 0.5) { fragColour = vec4(1.0); return; }
     vec3 rnd = pixelNoise();
     int n = int(sampleCount);

@@ -7,9 +7,9 @@ in vec2 vUv;
 out vec4 fragColour;
 void main()
 {
-    vec4 p = texture(gbufferPosition, vUv);
+    vec4 p = viewPosition(vUv);
     if (p.w < 0.5) { fragColour = vec4(1.0); return; }
-    vec3 n = normalize(texture(gbufferNormal, vUv).xyz);
+    vec3 n = viewNormal(vUv);
     vec3 rnd = pixelNoise();
     vec3 t = normalize(rnd - n * dot(rnd, n));
     mat3 tbn = mat3(t, cross(n, t), n);

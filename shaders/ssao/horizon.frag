@@ -10,9 +10,9 @@ out vec4 fragColour;
 const int kDirections = 4;  // x steps = the sample count (16 -> 4 steps a direction)
 void main()
 {
-    vec4 p = texture(gbufferPosition, vUv);
+    vec4 p = viewPosition(vUv);
     if (p.w < 0.5) { fragColour = vec4(1.0); return; }
-    vec3 n = normalize(texture(gbufferNormal, vUv).xyz);
+    vec3 n = viewNormal(vUv);
     vec3 rnd = pixelNoise();
     // The radius projected to texture space at this depth.
     vec2 radiusUv = 0.5 * projScale * radius / -p.z;
@@ -29,7 +29,7 @@ void main()
             if (s >= steps) break;
             vec2 uv = vUv + dir * radiusUv * ((float(s) + jitter) / float(steps));
             if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) break;
-            vec4 q = texture(gbufferPosition, uv);
+            vec4 q = viewPosition(uv);
             if (q.w < 0.5) continue;
             vec3 h = q.xyz - p.xyz;
             float dist = length(h);

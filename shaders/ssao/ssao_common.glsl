@@ -1,20 +1,36 @@
-// Shared by the AO modes: G-buffer access and projection of view-space points to texture space.
-uniform sampler2D gbufferPosition;  // view-space position, w = 1 on geometry
-uniform sampler2D gbufferNormal;    // view-space normal
-uniform sampler2D noiseMap;         // 4x4 random unit vectors (packed to 0..1)
-uniform vec2 projScale;             // projection matrix [0][0] and [1][1]
-uniform float flipY;                // 1 when render textures are stored upside down
-uniform float radius;               // metres
+// Shared by the AO modes: G-buffer access and projection between view space and texture space.
+uniform sampler2D gbufferDepth;   // linear depth, metres; 0 where nothing was drawn (sky)
+uniform sampler2D gbufferNormal;  // view-space normal packed to 0..1
+uniform sampler2D noiseMap;       // 4x4 random unit vectors (packed to 0..1)
+uniform vec2 projScale;           // projection matrix [0][0] and [1][1]
+uniform float flipY;              // 1 when render textures are stored upside down
+uniform float radius;             // metres
 uniform float intensity;
 uniform vec3 kernel[32];
 uniform float sampleCount;
 
 vec2 projectToUv(vec3 p)
 {
-    vec2 ndc = projScale * p.xy / -p.z;
-    vec2 uv = ndc * 0.5 + 0.5;
+    vec2 uv = (projScale * p.xy / -p.z) * 0.5 + 0.5;
     if (flipY > 0.5) uv.y = 1.0 - uv.y;
     return uv;
+}
+
+// The view-space position seen at uv (projectToUv's inverse); w = 0 for sky. The position is
+// rebuilt at the centre of the depth texel actually read: a half-resolution pass's pixel centre
+// falls between full-resolution texels, and rebuilding there tilts sloped surfaces into bands.
+vec4 viewPosition(vec2 uv)
+{
+    vec2 size = vec2(textureSize(gbufferDepth, 0));
+    uv = (floor(uv * size) + 0.5) / size;
+    float depth = texture(gbufferDepth, uv).r;
+    vec2 ndc = vec2(uv.x, flipY > 0.5 ? 1.0 - uv.y : uv.y) * 2.0 - 1.0;
+    return vec4(ndc / projScale * depth, -depth, depth > 0.0 ? 1.0 : 0.0);
+}
+
+vec3 viewNormal(vec2 uv)
+{
+    return normalize(texture(gbufferNormal, uv).xyz * 2.0 - 1.0);
 }
 
 // Random rotation per pixel from a tiled 4x4 texture (interleaved sampling).
@@ -29,9 +45,10 @@ float occluderAt(vec3 q, float centreZ)
 {
     vec2 uv = projectToUv(q);
     if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) return 0.0;
-    vec4 s = texture(gbufferPosition, uv);
-    if (s.w < 0.5) return 0.0;  // sky
-    float inFront = s.z >= q.z + 0.02 * radius ? 1.0 : 0.0;
-    float range = smoothstep(0.0, 1.0, radius / max(abs(centreZ - s.z), 1e-4));
+    float depth = texture(gbufferDepth, uv).r;
+    if (depth <= 0.0) return 0.0;  // sky
+    float sz = -depth;
+    float inFront = sz >= q.z + 0.02 * radius ? 1.0 : 0.0;
+    float range = smoothstep(0.0, 1.0, radius / max(abs(centreZ - sz), 1e-4));
     return inFront * range;
 }
