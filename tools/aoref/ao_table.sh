@@ -35,3 +35,14 @@ for v in "${views[@]}"; do
     printf '| %s | %s | %s | %s | %s |\n' "$name" "$m" "${mae#mae=}" "${rmse#rmse=}" "${bias#bias=}"
   done
 done
+
+# The side-by-side image of the modes (for the READMEs): the lit scene, each mode's AO, the reference.
+if [ -x build/tools/aoref/obscura_side_by_side ] && [ -f "$out/sibenik_nave_reference.png" ]; then
+  pose="0 1.65 0 90 0"
+  "$game" --headless --ticks 1 --width $W --height $H --level tests/ssao/views/sibenik.map --start-pose "$pose" \
+    --hud off --screenshot "$out/sibenik_nave_scene.png" >/dev/null
+  build/tools/aoref/obscura_side_by_side "$out/ao_modes_sibenik.png" "$out/sibenik_nave_scene.png" \
+    "$out/sibenik_nave_crytek.png" "$out/sibenik_nave_hemisphere.png" "$out/sibenik_nave_horizon.png" \
+    "$out/sibenik_nave_reference.png"
+  echo "side by side: $out/ao_modes_sibenik.png (scene | crytek | hemisphere | horizon | ray-traced reference)"
+fi
