@@ -121,7 +121,8 @@ void AmbientOcclusion::notifyMaterialRender(Ogre::uint32 passId, Ogre::MaterialP
         fp->setNamedConstant("radius", static_cast<float>(knobs_.radius));
         fp->setNamedConstant("intensity", static_cast<float>(knobs_.intensity));
         fp->setNamedConstant("sampleCount", static_cast<float>(std::clamp(knobs_.samples, 1, kMaxSamples)));
-        const auto& k = mode_ == "crytek" ? sphereKernel_ : hemisphereKernel_;
+        // Sphere kernels for the depth-only and cone modes, hemispheres for the normal-oriented one.
+        const auto& k = mode_ == "crytek" || mode_ == "cone" ? sphereKernel_ : hemisphereKernel_;
         fp->setNamedConstant("kernel", k.data(), static_cast<size_t>(kMaxSamples), 3);
     } else if (passId == kBlurX || passId == kBlurY) {
         const Ogre::TextureUnitState* in = pass->getTextureUnitState(0);

@@ -112,6 +112,6 @@ TEST(Settings, AoModeIsValidatedAndCycles) {
     EXPECT_EQ(s.ssao, "crytek");
     EXPECT_DOUBLE_EQ(s.ssaoRadius, 0.8);
     EXPECT_EQ(s.ssaoSamples, 32);  // clamped with a warning
-    EXPECT_NE(errorOf({"--ssao", "hbao++"}).find("unknown mode 'hbao++', expected one of off, crytek, hemisphere, horizon"),
+    EXPECT_NE(errorOf({"--ssao", "hbao++"}).find("unknown mode 'hbao++', expected one of off, crytek, hemisphere, cone, horizon"),
               std::string::npos);
 }

@@ -21,7 +21,7 @@ views=(
   "sibenik_nave|tests/ssao/views/sibenik.map|0 1.65 0 90 0"
   "sibenik_pillars|tests/ssao/views/sibenik.map|0 1.65 0 -90 -10"
 )
-modes=(crytek hemisphere horizon)
+modes=(crytek hemisphere cone horizon)
 printf '| view | mode | MAE | RMSE | bias |\n|---|---|---|---|---|\n'
 for v in "${views[@]}"; do
   IFS='|' read -r name level pose <<<"$v"
@@ -42,7 +42,8 @@ if [ -x build/tools/aoref/obscura_side_by_side ] && [ -f "$out/sibenik_nave_refe
   "$game" --headless --ticks 1 --width $W --height $H --level tests/ssao/views/sibenik.map --start-pose "$pose" \
     --hud off --screenshot "$out/sibenik_nave_scene.png" >/dev/null
   build/tools/aoref/obscura_side_by_side "$out/ao_modes_sibenik.png" "$out/sibenik_nave_scene.png" \
-    "$out/sibenik_nave_crytek.png" "$out/sibenik_nave_hemisphere.png" "$out/sibenik_nave_horizon.png" \
+    "$out/sibenik_nave_crytek.png" "$out/sibenik_nave_hemisphere.png" "$out/sibenik_nave_cone.png" \
+    "$out/sibenik_nave_horizon.png" \
     "$out/sibenik_nave_reference.png"
-  echo "side by side: $out/ao_modes_sibenik.png (scene | crytek | hemisphere | horizon | ray-traced reference)"
+  echo "side by side: $out/ao_modes_sibenik.png (scene | crytek | hemisphere | cone | horizon | ray-traced reference)"
 fi
