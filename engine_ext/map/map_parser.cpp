@@ -2,8 +2,8 @@
 #include "map/map_parser.h"
 
 #include <cctype>
-#include <cerrno>
-#include <cstdlib>
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -54,17 +54,30 @@ public:
         ++i_;
     }
 
+    // A quoted string. Escapes follow TrenchBroom: a quote preceded by an odd number of
+    // backslashes is part of the value (and unescaped to '"'); other backslashes are kept as
+    // written. A value ending in a backslash ("c:\\quake\\") is still closed when the quote is
+    // the last thing on its line, as TrenchBroom's reader does.
     std::string quoted() {
         if (peek() != '"') fail("expected a quoted string");
         const SourcePos at = pos();
         ++i_;
         std::string out;
-        while (i_ < s_.size() && s_[i_] != '"') {
-            if (s_[i_] == '\n') fail("unterminated string (newline inside quotes)", at);
-            if (s_[i_] == '\\' && i_ + 1 < s_.size() && s_[i_ + 1] == '"') ++i_;  // escaped quote
-            out += s_[i_++];
+        for (;;) {
+            if (i_ >= s_.size()) fail("unterminated string", at);
+            const char c = s_[i_];
+            if (c == '\n' || c == '\r') fail("unterminated string (newline inside quotes)", at);
+            if (c == '"') {
+                std::size_t slashes = 0;
+                while (slashes < out.size() && out[out.size() - 1 - slashes] == '\\') ++slashes;
+                if (slashes % 2 == 0 || quoteEndsLine(i_ + 1)) break;
+                out.back() = '"';  // the escaping backslash becomes the quote
+                ++i_;
+                continue;
+            }
+            out += c;
+            ++i_;
         }
-        if (i_ >= s_.size()) fail("unterminated string", at);
         ++i_;
         return out;
     }
@@ -78,6 +91,7 @@ public:
         return std::string(s_.substr(b, i_ - b));
     }
 
+    // A number token (sign, digits, '.', exponent); std::from_chars is exact and locale-free.
     double number(const char* what) {
         if (!skip()) fail(std::string("unexpected end of file, expected ") + what);
         const SourcePos at = pos();
@@ -85,12 +99,13 @@ public:
         while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' ||
                                   s_[i_] == '-' || s_[i_] == '+'))
             ++i_;
-        const std::string tok(s_.substr(b, i_ - b));
+        const std::string_view tok = s_.substr(b, i_ - b);
         if (tok.empty()) fail(std::string("expected ") + what + ", found '" + s_[i_] + "'", at);
-        errno = 0;
-        char* end = nullptr;
-        const double v = std::strtod(tok.c_str(), &end);
-        if (*end != '\0' || errno == ERANGE || v != v) fail("'" + tok + "' is not a number (" + what + ")", at);
+        const std::string_view digits = tok[0] == '+' ? tok.substr(1) : tok;  // from_chars rejects '+'
+        double v = 0;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+        if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(v))
+            fail("'" + std::string(tok) + "' is not a number (" + what + ")", at);
         return v;
     }
 
@@ -114,6 +129,12 @@ public:
     }
 
 private:
+    // True if only blanks (or a // comment) follow position j up to the end of its line.
+    bool quoteEndsLine(std::size_t j) const {
+        while (j < s_.size() && (s_[j] == ' ' || s_[j] == '\t')) ++j;
+        return j >= s_.size() || s_[j] == '\n' || s_[j] == '\r' || (s_[j] == '/' && j + 1 < s_.size() && s_[j + 1] == '/');
+    }
+
     std::string_view s_;
     const std::string& file_;
     std::size_t i_ = 0;
@@ -135,7 +156,8 @@ MapFace face(Lexer& lx) {
     MapFace f;
     f.pos = lx.pos();
     for (auto& p : f.points) p = point(lx);
-    f.texture = lx.word("a texture name");
+    // TrenchBroom quotes texture names that hold blanks or quotes.
+    f.texture = lx.peek() == '"' ? lx.quoted() : lx.word("a texture name");
     if (lx.peek() == '[') {
         f.valve220 = true;
         lx.expect('[', "");
@@ -164,6 +186,12 @@ const std::string& MapEntity::value(const std::string& key) const {
     for (const auto& kv : keys)
         if (kv.first == key) return kv.second;
     return LevelEntity::empty();
+}
+
+bool MapEntity::has(const std::string& key) const {
+    for (const auto& kv : keys)
+        if (kv.first == key) return true;
+    return false;
 }
 
 MapFile parseMap(std::string_view text, const std::string& fileName) {

@@ -40,13 +40,14 @@ struct MapEntity {
     std::vector<std::pair<std::string, std::string>> keys;
     std::vector<MapBrush> brushes;
     SourcePos pos;
-    const std::string& value(const std::string& key) const;
+    const std::string& value(const std::string& key) const;  // "" when absent
+    bool has(const std::string& key) const;
 };
 
 struct MapFile {
     std::string path;
     std::vector<MapEntity> entities;
-    std::vector<std::string> warnings;
+    std::vector<std::string> warnings;  // skipped blocks, `file:line: ...`
 };
 
 MapFile parseMap(std::string_view text, const std::string& fileName);

@@ -55,7 +55,7 @@ TEST(MapParser, QuakeAndValveFacesCommentsAndQuotedValues) {
 }
 
 TEST(MapParser, ErrorsNameFileLineAndColumn) {
-    // Missing ')' after the first point of the face on line 3: the lexer finds '(' at column 11.
+    // Missing ')' after the first point of the face on line 3: the lexer finds '(' at column 9.
     EXPECT_EQ(errorOf("{\n{\n( 0 0 0 ( 0 1 0 ) ( 1 0 0 ) tex 0 0 0 1 1\n}\n}\n"),
               "t.map:3:9: expected ')' to close a face point, found '('");
     EXPECT_EQ(errorOf("{\n\"classname\" \"worldspawn\n}\n"), "t.map:2:13: unterminated string (newline inside quotes)");
@@ -83,4 +83,75 @@ TEST(MapParser, MissingFileIsAClearError) {
     } catch (const MapError& e) {
         EXPECT_EQ(std::string(e.what()), "/nonexistent/level.map: cannot open map file");
     }
+}
+
+TEST(MapParser, MoreErrorsWithPositions) {
+    // A quote never closed before the end of the file: reported where the string opens.
+    EXPECT_EQ(errorOf("{\n\"classname\" \"worldsp"), "t.map:2:13: unterminated string");
+    // A bad number among the texture parameters (the x scale, column 41).
+    EXPECT_EQ(errorOf("{\n{\n( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) tex 0 0 0 1.5.2 1\n}\n}\n"),
+              "t.map:3:41: '1.5.2' is not a number (x scale)");
+    // Infinity and NaN are not coordinates.
+    EXPECT_EQ(errorOf("{\n{\n( inf 0 0 ) ( 0 1 0 ) ( 1 0 0 ) tex 0 0 0 1 1\n}\n}\n"),
+              "t.map:3:3: 'inf' is not a number (x coordinate)");
+    EXPECT_EQ(errorOf("{\n{\n( 0 0 0 ) ( 0 1 0 ) ( 1 0 nan ) tex 0 0 0 1 1\n}\n}\n"),
+              "t.map:3:27: 'nan' is not a number (z coordinate)");
+    // A Valve-220 axis missing its closing bracket.
+    EXPECT_EQ(errorOf("{\n{\n( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) tex [ 1 0 0 0 [ 0 -1 0 0 ] 0 1 1\n}\n}\n"),
+              "t.map:3:45: expected ']' to close the u axis, found '['");
+    // The file ends inside a brush, right after a complete face.
+    EXPECT_EQ(errorOf("{\n\"classname\" \"worldspawn\"\n{\n( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) tex 0 0 0 1 1\n"),
+              "t.map:5:1: unexpected end of file inside the brush opened at line 3");
+    // ... or inside a face.
+    EXPECT_EQ(errorOf("{\n{\n( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) tex 0 0"),
+              "t.map:3:38: unexpected end of file, expected rotation");
+}
+
+TEST(MapParser, EscapedQuotesAndBackslashes) {
+    const MapFile m = parseMap(
+        "{\n"
+        "\"a\" \"say \\\"hi\\\" now\"\n"      // "say \"hi\" now" -> say "hi" now
+        "\"wad\" \"c:\\quake\\\"\n"              // ends in a backslash: the quote still closes
+        "\"b\" \"x\\\\\" \"c\" \"y\"\n"      // "x\\" : an even run of backslashes, then the quote
+        "}\n",
+        "t.map");
+    ASSERT_EQ(m.entities.size(), 1u);
+    const MapEntity& e = m.entities[0];
+    EXPECT_EQ(e.value("a"), "say \"hi\" now");
+    EXPECT_EQ(e.value("wad"), "c:\\quake\\");
+    EXPECT_EQ(e.value("b"), "x\\\\");
+    EXPECT_EQ(e.value("c"), "y");
+    EXPECT_TRUE(e.has("c"));
+    EXPECT_FALSE(e.has("d"));
+}
+
+TEST(MapParser, TextureNamesWithSymbolsAndQuotes) {
+    const MapFile m = parseMap(
+        "{\n{\n"
+        "( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) +0slipbot 0 0 0 1 1\n"
+        "( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) common/clip-2.x 0 0 0 1 1\n"
+        "( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) \"my tex\" 0 0 0 1 1\n"
+        "( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) {fence 1e-05 -2.5E1 +90 1 1\n"
+        "}\n}\n",
+        "t.map");
+    const auto& f = m.entities.at(0).brushes.at(0).faces;
+    ASSERT_EQ(f.size(), 4u);
+    EXPECT_EQ(f[0].texture, "+0slipbot");
+    EXPECT_EQ(f[1].texture, "common/clip-2.x");
+    EXPECT_EQ(f[2].texture, "my tex");
+    EXPECT_EQ(f[3].texture, "{fence");
+    EXPECT_DOUBLE_EQ(f[3].uOffset, 1e-05);
+    EXPECT_DOUBLE_EQ(f[3].vOffset, -25);
+    EXPECT_DOUBLE_EQ(f[3].rotation, 90);
+}
+
+TEST(MapParser, SkipsQuake3BrushDefWithAWarning) {
+    const MapFile m = parseMap(
+        "{\n\"classname\" \"worldspawn\"\n{\nbrushDef\n{\n( 0 0 1 0 ) ( ( 1 0 0 ) ( 0 1 0 ) ) tex 0 0 0\n}\n}\n"
+        "{\n( 0 0 0 ) ( 0 1 0 ) ( 1 0 0 ) tex 0 0 0 1 1\n}\n}\n",
+        "t.map");
+    ASSERT_EQ(m.entities.size(), 1u);
+    EXPECT_EQ(m.entities[0].brushes.size(), 1u);  // the ordinary brush after it still parses
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_NE(m.warnings[0].find("t.map:4: skipped unsupported 'brushDef'"), std::string::npos) << m.warnings[0];
 }
