@@ -30,6 +30,12 @@ void Recorder::key(std::int64_t tick, const std::string& key, Command::Action ac
 void Recorder::keyDown(std::int64_t tick, const std::string& k) { key(tick, k, Command::Action::Down); }
 void Recorder::keyUp(std::int64_t tick, const std::string& k) { key(tick, k, Command::Action::Up); }
 
+void Recorder::button(std::int64_t tick, const std::string& button, bool down) {
+    if (button != "left" && button != "right" && button != "middle")
+        throw ScriptError("Recorder: unknown button '" + button + "', expected left, right or middle");
+    key(tick, buttonKeyName(button), down ? Command::Action::Down : Command::Action::Up);
+}
+
 void Recorder::mouse(std::int64_t tick, int dx, int dy) {
     if (mouseIndex_ >= 0 && script_.commands[static_cast<std::size_t>(mouseIndex_)].tick == tick) {
         auto& c = script_.commands[static_cast<std::size_t>(mouseIndex_)];

@@ -16,6 +16,8 @@ public:
     void keyDown(std::int64_t tick, const std::string& key);
     void keyUp(std::int64_t tick, const std::string& key);
     void mouse(std::int64_t tick, int dx, int dy);
+    // `button` is left, right or middle (anything else throws ScriptError).
+    void button(std::int64_t tick, const std::string& button, bool down);
     void capture(std::int64_t tick, const std::string& name);
     void hash(std::int64_t tick, const std::string& expected = {});
     void end(std::int64_t tick);

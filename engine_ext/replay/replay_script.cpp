@@ -2,16 +2,30 @@
 #include "replay/replay_script.h"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cerrno>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <set>
+#include <map>
 #include <sstream>
 
 namespace obscura::replay {
 
 namespace {
 constexpr int kVersion = 1;
+
+// The shortest decimal text that reads back as exactly `v` (60 -> "60", 59.94 -> "59.94").
+std::string shortest(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+// Tick rates the fixed-step simulation is meant for: below 10 Hz movement and collision get
+// coarse, above 240 Hz a replay costs more steps than frames are worth on the test machines.
+constexpr double kMinTickRate = 10, kMaxTickRate = 240;
 
 std::vector<std::string> split(const std::string& line) {
     std::istringstream is(line);
@@ -59,8 +73,10 @@ public:
             arity(w, 2, "seed <unsigned integer>");
             errno = 0;
             char* end = nullptr;
-            const unsigned long long v = std::strtoull(w[1].c_str(), &end, 0);
-            if (*end || errno == ERANGE || w[1][0] == '-') fail("'" + w[1] + "' is not an unsigned integer, expected a seed");
+            // Base 10 only: a leading zero must not turn "010" into octal 8.
+            const unsigned long long v = std::strtoull(w[1].c_str(), &end, 10);
+            if (*end || errno == ERANGE || !std::isdigit(static_cast<unsigned char>(w[1][0])))
+                fail("'" + w[1] + "' is not an unsigned 64-bit integer, expected a seed");
             s.seed = v;
         } else if (w[0] == "resolution") {
             arity(w, 3, "resolution <width> <height>");
@@ -68,7 +84,13 @@ public:
             s.height = static_cast<int>(integer(w[2], "a height", 16, 8192));
         } else if (w[0] == "tickrate") {
             arity(w, 2, "tickrate <ticks per second>");
-            s.tickRate = static_cast<double>(integer(w[1], "a tick rate", 10, 240));
+            char* end = nullptr;
+            const double v = std::strtod(w[1].c_str(), &end);
+            if (*end || !std::isdigit(static_cast<unsigned char>(w[1][0])) || !std::isfinite(v))
+                fail("'" + w[1] + "' is not a number, expected ticks per second");
+            if (v < kMinTickRate || v > kMaxTickRate)
+                fail("tick rate " + w[1] + " is out of range, expected " + shortest(kMinTickRate) + " to " + shortest(kMaxTickRate));
+            s.tickRate = v;
         } else {
             fail("unknown header '" + w[0] + "', expected level, seed, resolution, tickrate or '<tick> <command>'");
         }
@@ -103,7 +125,8 @@ public:
                 return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
             });
             if (!ok) fail("bad capture name '" + w[2] + "', expected letters, digits, '_' and '-'");
-            if (!captures_.insert(w[2]).second) fail("duplicate capture name '" + w[2] + "'");
+            const auto [it, fresh] = captures_.emplace(w[2], line_);
+            if (!fresh) fail("duplicate capture name '" + w[2] + "' (first on line " + std::to_string(it->second) + "), expected a unique name");
             c.type = Command::Type::Capture;
             c.name = w[2];
         } else if (cmd == "set") {
@@ -186,7 +209,7 @@ private:
     const std::string& file_;
     const std::function<bool(const std::string&)>& known_;
     int line_ = 0;
-    std::set<std::string> captures_;
+    std::map<std::string, int> captures_;  // capture name -> line it was first used on
 };
 
 const char* actionName(Command::Action a) {
@@ -195,6 +218,14 @@ const char* actionName(Command::Action a) {
 }  // namespace
 
 std::int64_t Script::endTick() const { return commands.empty() ? 0 : commands.back().tick; }
+
+std::vector<const Command*> Script::commandsAt(std::int64_t tick) const {
+    const auto lo = std::lower_bound(commands.begin(), commands.end(), tick,
+                                     [](const Command& c, std::int64_t t) { return c.tick < t; });
+    std::vector<const Command*> out;
+    for (auto it = lo; it != commands.end() && it->tick == tick; ++it) out.push_back(&*it);
+    return out;
+}
 
 const std::vector<std::string>& keyNames() {
     static const std::vector<std::string> names = [] {
@@ -235,7 +266,7 @@ std::string formatScript(const Script& s) {
     std::ostringstream o;
     o << "obscura-replay " << kVersion << "\n";
     o << "level " << s.level << "\nseed " << s.seed << "\nresolution " << s.width << " " << s.height << "\n";
-    o << "tickrate " << s.tickRate << "\n";
+    o << "tickrate " << shortest(s.tickRate) << "\n";
     for (const auto& c : s.commands) {
         o << c.tick << " ";
         switch (c.type) {

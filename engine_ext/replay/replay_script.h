@@ -5,7 +5,7 @@
 //   level media/levels/arena.map
 //   seed 12345
 //   resolution 640 360
-//   tickrate 60                 optional, default 60
+//   tickrate 60                 optional, default 60 (a decimal such as 59.94 is allowed)
 //   <tick> key <name> down|up|tap
 //   <tick> mouse <dx> <dy>      relative motion in counts
 //   <tick> button left|right|middle down|up|tap
@@ -58,6 +58,15 @@ struct Script {
 
     // The last tick to simulate: the `end` command's, else the last command's.
     std::int64_t endTick() const;
+    // The commands of one tick, in script order (commands are sorted by tick; binary search).
+    std::vector<const Command*> commandsAt(std::int64_t tick) const;
+
+    // Same header and commands; the file name and source line numbers are not compared.
+    bool operator==(const Script& o) const {
+        return version == o.version && level == o.level && seed == o.seed && width == o.width && height == o.height &&
+               tickRate == o.tickRate && commands == o.commands;
+    }
+    bool operator!=(const Script& o) const { return !(*this == o); }
 };
 
 // Key names scripts accept (the same as the game's bindings).
@@ -69,7 +78,8 @@ std::string buttonFromKeyName(const std::string& key);
 Script parseScript(std::string_view text, const std::string& fileName,
                    const std::function<bool(const std::string&)>& isKnownSetting = {});
 Script loadScript(const std::string& path, const std::function<bool(const std::string&)>& isKnownSetting = {});
-// Writes a script back in canonical form: parseScript(formatScript(s)) has the same commands.
+// Writes a script back in canonical form (used by --record): parseScript(formatScript(s)) == s for
+// every script the parser or the Recorder produces.
 std::string formatScript(const Script& s);
 
 }  // namespace obscura::replay

@@ -1,3 +1,5 @@
+// Tests of the replay script format v1 (engine_ext/replay): parser, errors with file:line, format
+// round trip, commandsAt and the Recorder.
 #include <gtest/gtest.h>
 
 #include "replay/replay_recorder.h"
@@ -119,4 +121,114 @@ TEST(ReplayRecorder, MergesMouseMotionPerTickAndOrdersByTick) {
     EXPECT_EQ(s.commands[4].name, "left");
     EXPECT_EQ(s.commands[6].type, Command::Type::End);
     EXPECT_EQ(s.seed, 3u);
+}
+
+TEST(ReplayScript, AcceptsEveryKeyNameOfTheFormatAndNoOther) {
+    std::vector<std::string> names;
+    for (char c = 'a'; c <= 'z'; ++c) names.emplace_back(1, c);
+    for (char c = '0'; c <= '9'; ++c) names.emplace_back(1, c);
+    for (int i = 1; i <= 12; ++i) names.push_back("f" + std::to_string(i));
+    for (const char* n : {"space", "return", "escape", "tab", "backspace", "lshift", "rshift", "lctrl", "rctrl", "lalt",
+                          "ralt", "up", "down", "left", "right", "minus", "equals", "comma", "period", "slash", "grave"})
+        names.emplace_back(n);
+    std::string body;
+    for (const auto& n : names) body += "0 key " + n + " tap\n";
+    const Script s = parseScript(kHeader + body, "keys.replay");
+    ASSERT_EQ(s.commands.size(), names.size());
+    for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(s.commands[i].name, names[i]);
+    for (const char* bad : {"W", "f13", "f0", "shift", "enter", "mouse1"})
+        EXPECT_EQ(errorOf(std::string("0 key ") + bad + " down\n"),
+                  std::string("r.replay:5: unknown key '") + bad + "', expected a key name such as w, space, lshift, f1")
+            << bad;
+}
+
+TEST(ReplayScript, HeaderDefaultsAndValues) {
+    const Script d = parseScript("obscura-replay 1\nlevel a b.map\n", "d.replay");
+    EXPECT_EQ(d.level, "a b.map");
+    EXPECT_DOUBLE_EQ(d.tickRate, 60);  // default
+    EXPECT_TRUE(d.commands.empty());
+    EXPECT_EQ(d.endTick(), 0);
+    const Script s = parseScript("obscura-replay 1 # v1\nlevel x.map\nseed 18446744073709551615\nseed 010\ntickrate 59.94\n", "s.replay");
+    EXPECT_EQ(s.seed, 10u);  // the last seed line wins; decimal, not octal
+    EXPECT_DOUBLE_EQ(s.tickRate, 59.94);
+    EXPECT_EQ(parseScript("obscura-replay 1\nlevel x.map\nseed 18446744073709551615\n", "s.replay").seed, 18446744073709551615u);
+}
+
+TEST(ReplayScript, HeaderValueErrorsNameTheirLine) {
+    auto err = [](const std::string& headerLine) {
+        try {
+            parseScript("obscura-replay 1\n# c\nlevel a.map\n" + headerLine + "\n", "h.replay");
+        } catch (const ScriptError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(err("seed -1"), "h.replay:4: '-1' is not an unsigned 64-bit integer, expected a seed");
+    EXPECT_EQ(err("seed 18446744073709551616"), "h.replay:4: '18446744073709551616' is not an unsigned 64-bit integer, expected a seed");
+    EXPECT_EQ(err("seed 0x10"), "h.replay:4: '0x10' is not an unsigned 64-bit integer, expected a seed");
+    EXPECT_EQ(err("seed 1 2"), "h.replay:4: extra arguments, expected 'seed <unsigned integer>'");
+    EXPECT_EQ(err("tickrate 5"), "h.replay:4: tick rate 5 is out of range, expected 10 to 240");
+    EXPECT_EQ(err("tickrate fast"), "h.replay:4: 'fast' is not a number, expected ticks per second");
+    EXPECT_EQ(err("tickrate nan"), "h.replay:4: 'nan' is not a number, expected ticks per second");
+    EXPECT_EQ(err("resolution 640"), "h.replay:4: missing arguments, expected 'resolution <width> <height>'");
+    EXPECT_EQ(err("resolution 640 x"), "h.replay:4: 'x' is not an integer, expected a height");
+    EXPECT_EQ(err("level"), "h.replay:4: missing path, expected 'level <path>'");
+    EXPECT_EQ(err("obscura-replay 1"), "h.replay:4: unknown header 'obscura-replay', expected level, seed, resolution, tickrate or '<tick> <command>'");
+    EXPECT_EQ(err("0"), "h.replay:4: missing command after tick, expected '<tick> <command>'");
+    EXPECT_EQ(err("0 capture a\n9 capture a"), "h.replay:5: duplicate capture name 'a' (first on line 4), expected a unique name");
+    EXPECT_EQ(err("0 end\n\n# trailing comments are fine\n"), "");
+}
+
+TEST(ReplayScript, CommandsAtGroupsOneTickInScriptOrder) {
+    const Script s = parseScript(std::string(kHeader) + "0 key w down\n5 mouse 1 2\n5 capture a\n5 hash\n9 end\n", "t.replay");
+    EXPECT_TRUE(s.commandsAt(3).empty());
+    const auto at5 = s.commandsAt(5);
+    ASSERT_EQ(at5.size(), 3u);
+    EXPECT_EQ(at5[0]->type, Command::Type::Mouse);
+    EXPECT_EQ(at5[1]->name, "a");
+    EXPECT_EQ(at5[2]->type, Command::Type::Hash);
+    EXPECT_EQ(at5[0], &s.commands[1]);  // points into the script, no copies
+    ASSERT_EQ(s.commandsAt(9).size(), 1u);
+    EXPECT_TRUE(s.commandsAt(10).empty());
+}
+
+TEST(ReplayScript, FormatParseRoundTripIsEqualAndStable) {
+    const Script a = parseScript(std::string(kHeader) + "tickrate 59.94\n0 key f12 tap\n0 mouse 0 -100000\n2 button middle up\n"
+                                 "2 set ssao hemisphere   half\n3 capture k-9_Z\n3 hash\n4 end\n",
+                                 "a.replay");
+    const std::string text = formatScript(a);
+    const Script b = parseScript(text, "b.replay");
+    EXPECT_EQ(b, a);
+    EXPECT_EQ(b.commands[3].value, "hemisphere half");
+    EXPECT_EQ(formatScript(b), text);  // canonical: formatting again changes nothing
+    Script c = b;
+    c.commands[1].dy = 3;
+    EXPECT_NE(c, a);  // the comparison sees a changed command
+}
+
+TEST(ReplayRecorder, ButtonsAndKeysParseBackToTheSameCommands) {
+    Recorder r("media/levels/arena.map", 99, 640, 360, 60);
+    r.end(7);  // recorded first, still last
+    r.button(1, "right", true);
+    r.keyDown(1, "lshift");
+    r.mouse(1, -3, 0);
+    r.capture(2, "shot");
+    r.button(2, "right", false);
+    r.mouse(2, 1, 1);
+    r.mouse(2, 1, 1);
+    r.keyUp(3, "lshift");
+    const Script rec = r.script();
+    const Script back = parseScript(formatScript(rec), "rec.replay");
+    EXPECT_EQ(back, rec);
+    ASSERT_EQ(back.commands.size(), 8u);
+    EXPECT_EQ(back.commands[0].type, Command::Type::Button);
+    EXPECT_EQ(back.commands[0].name, "right");
+    EXPECT_EQ(back.commands[0].action, Command::Action::Down);
+    EXPECT_EQ(back.commands[4].type, Command::Type::Button);
+    EXPECT_EQ(back.commands[4].action, Command::Action::Up);
+    EXPECT_EQ(back.commands[5].dx, 2);  // two motions in tick 2 merged
+    EXPECT_EQ(back.commands[5].dy, 2);
+    EXPECT_EQ(back.commands.back().type, Command::Type::End);
+    EXPECT_EQ(back.endTick(), 7);
+    EXPECT_THROW(r.button(4, "side", true), ScriptError);
 }
