@@ -10,6 +10,20 @@
 namespace obscura::imagecmp {
 
 namespace {
+std::string sizeText(const Image& im) { return std::to_string(im.width) + "x" + std::to_string(im.height); }
+
+// Both images non-empty, of one size, with as many bytes as their size says (never read past them).
+void checkPair(const Image& a, const Image& b) {
+    for (const Image* im : {&a, &b}) {
+        if (im->width <= 0 || im->height <= 0) throw ImageError("empty image (" + sizeText(*im) + ")");
+        if (im->rgba.size() != static_cast<std::size_t>(im->width) * static_cast<std::size_t>(im->height) * 4)
+            throw ImageError("image of " + sizeText(*im) + " holds " + std::to_string(im->rgba.size()) +
+                             " bytes, expected width*height*4");
+    }
+    if (a.width != b.width || a.height != b.height)
+        throw ImageError("image sizes differ: " + sizeText(a) + " vs " + sizeText(b));
+}
+
 std::vector<double> luma(const Image& im) {
     std::vector<double> y(static_cast<std::size_t>(im.width) * im.height);
     for (std::size_t i = 0; i < y.size(); ++i) {
@@ -65,9 +79,7 @@ double ssim(const Image& a, const Image& b) {
 }  // namespace
 
 Metrics compare(const Image& a, const Image& b, int threshold) {
-    if (a.width != b.width || a.height != b.height)
-        throw ImageError("image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +
-                         std::to_string(b.width) + "x" + std::to_string(b.height));
+    checkPair(a, b);
     Metrics m;
     double se = 0;
     const std::size_t n = static_cast<std::size_t>(a.width) * a.height;
@@ -110,7 +122,8 @@ std::vector<std::string> failures(const Metrics& m, const Tolerance& t) {
 }
 
 Image diffHeatmap(const Image& a, const Image& b, double amplify) {
-    if (a.width != b.width || a.height != b.height) throw ImageError("image sizes differ");
+    checkPair(a, b);
+    if (!(amplify > 0) || !std::isfinite(amplify)) throw ImageError("heat map amplification " + std::to_string(amplify) + ", expected a positive number");
     Image out{a.width, a.height, std::vector<std::uint8_t>(a.rgba.size())};
     for (std::size_t i = 0; i < a.rgba.size() / 4; ++i) {
         int worst = 0;

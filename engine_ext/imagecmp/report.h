@@ -19,8 +19,11 @@ struct ReportEntry {
     std::vector<std::string> failures;  // empty = passed; also holds "missing reference" etc.
 };
 
-// Writes DIR/report.html and DIR/<name>.{reference,actual,diff}.png; returns the report's path.
+// Writes DIR/report.html and DIR/<name>.{reference,actual,diff}.png (characters outside
+// [A-Za-z0-9_-] in a name become '_' in its file names); links are relative, so the folder can be
+// moved or archived whole. `*Versions` name the renderer each side was made with. Returns the
+// report's path; throws ImageError (or std::filesystem::filesystem_error) when DIR cannot be written.
 std::string writeReport(const std::string& dir, const std::string& testName, const std::vector<ReportEntry>& entries,
-                        const std::string& referenceVersions, const std::string& actualVersions);
+                        const std::string& referenceVersions = "unknown", const std::string& actualVersions = "unknown");
 
 }  // namespace obscura::imagecmp

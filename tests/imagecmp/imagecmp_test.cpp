@@ -1,8 +1,11 @@
+// Tests of the image comparison (engine_ext/imagecmp): metrics, heat map, PNG I/O, the HTML report
+// and obscura_imgcompare's output and exit codes (run as a subprocess).
 #include <gtest/gtest.h>
 
 #include "core/rng.h"
 #include "imagecmp/imagecmp.h"
 #include "imagecmp/report.h"
+#include "run_process.h"
 #include "texgen/texgen.h"
 
 #include <cmath>
@@ -49,7 +52,12 @@ Image blurred(const Image& a) {  // 3x3 box blur
     return b;
 }
 
-std::string tempPath(const std::string& name) { return (std::filesystem::path(testing::TempDir()) / name).string(); }
+// Under a folder of this suite's own, so generic names (ref.png) cannot meet other suites' files.
+std::string tempPath(const std::string& name) {
+    const auto dir = std::filesystem::path(testing::TempDir()) / "obscura_imagecmp_test";
+    std::filesystem::create_directories(dir);
+    return (dir / name).string();
+}
 }  // namespace
 
 TEST(ImageCompare, IdenticalImagesPass) {
@@ -146,4 +154,87 @@ TEST(ImageCompare, ToolExitCodes) {
     EXPECT_EQ(run(tempPath("t_a.png") + " " + tempPath("t_b.png") + " --max-pixels-over 100000"), 1);
     EXPECT_EQ(run(tempPath("t_a.png") + " " + tempPath("nope.png")), 2);
     EXPECT_EQ(run("--bogus"), 2);
+}
+
+TEST(ImageCompare, MalformedImagesThrowInsteadOfReadingPastTheEnd) {
+    const Image a = frame();
+    Image shortData = a;
+    shortData.rgba.resize(100);
+    EXPECT_THROW(compare(a, shortData), ImageError);
+    EXPECT_THROW(compare(shortData, a), ImageError);
+    EXPECT_THROW(diffHeatmap(a, shortData), ImageError);
+    const Image empty;
+    EXPECT_THROW(compare(empty, empty), ImageError);
+    try {
+        compare(a, Image{10, 20, std::vector<std::uint8_t>(800)});
+        ADD_FAILURE() << "no exception";
+    } catch (const ImageError& e) {
+        EXPECT_STREQ(e.what(), "image sizes differ: 256x160 vs 10x20");
+    }
+}
+
+TEST(ImageCompare, HeatmapIsBlackWhereEqualAndBrightWhereChanged) {
+    const Image a = frame();
+    Image b = a;
+    const std::size_t changed = (10 * 256 + 20) * 4;
+    b.rgba[changed + 1] = static_cast<std::uint8_t>(b.rgba[changed + 1] ^ 0x80);  // green off by 128
+    const Image h = diffHeatmap(a, b, 8);
+    ASSERT_EQ(h.rgba.size(), a.rgba.size());
+    long lit = 0;
+    for (std::size_t i = 0; i < h.rgba.size(); i += 4) lit += h.rgba[i] != 0 || h.rgba[i + 1] != 0 || h.rgba[i + 2] != 0;
+    EXPECT_EQ(lit, 1);
+    EXPECT_EQ(h.rgba[changed], 255);  // 128 x 8 saturates to white
+    EXPECT_EQ(h.rgba[changed + 2], 255);
+    EXPECT_THROW(diffHeatmap(a, b, -1), ImageError);
+}
+
+TEST(ImageCompare, ReportFileNamesAreSafeAndRelative) {
+    const Image a = frame();
+    writePng(a, tempPath("same.png"));
+    const std::string dir = tempPath("report_odd");
+    const Metrics m = compare(a, a);
+    const std::string html = writeReport(dir, "odd <name>", {{"../x y", tempPath("same.png"), tempPath("same.png"), m, {}, {}}});
+    std::ifstream in(html);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    for (const char* f : {"___x_y.reference.png", "___x_y.actual.png", "___x_y.diff.png"}) {
+        EXPECT_NE(text.find(std::string("src=\"") + f + "\""), std::string::npos) << f;
+        EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir) / f)) << f;
+    }
+    EXPECT_NE(text.find("odd &lt;name&gt;"), std::string::npos);
+    EXPECT_EQ(text.find("FAIL"), std::string::npos);  // identical: passes
+    EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(dir).parent_path() / "x y.reference.png"));
+}
+
+TEST(ImageCompare, ToolPrintsMetricsFailedMetricAndReportPath) {
+    using obscura::testing_support::runProcess;
+    const Image a = frame();
+    writePng(a, tempPath("p_a.png"));
+    writePng(blurred(a), tempPath("p_b.png"));
+    const std::string tool = OBSCURA_IMGCOMPARE;
+    const auto same = runProcess(tool + " " + tempPath("p_a.png") + " " + tempPath("p_a.png"));
+    EXPECT_EQ(same.code, 0) << same.out;
+    EXPECT_EQ(same.out, "ssim=1.00000 psnr=inf maxdiff=0 over=0\n");
+
+    const std::string dir = tempPath("tool_report");
+    const auto blur = runProcess(tool + " " + tempPath("p_a.png") + " " + tempPath("p_b.png") +
+                                 " --max-pixels-over 1000000 --report " + dir + " --name blur");
+    EXPECT_EQ(blur.code, 1) << blur.out;
+    EXPECT_EQ(blur.out.rfind("ssim=0.", 0), 0u) << blur.out;
+    EXPECT_NE(blur.out.find("FAIL: SSIM"), std::string::npos) << blur.out;
+    EXPECT_EQ(blur.out.find("FAIL: max channel"), std::string::npos) << blur.out;  // 255 allowed by default
+    EXPECT_NE(blur.out.find("report: " + dir + "/report.html"), std::string::npos) << blur.out;
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir) / "blur.diff.png"));
+
+    // Loose enough limits pass the same pair.
+    EXPECT_EQ(runProcess(tool + " " + tempPath("p_a.png") + " " + tempPath("p_b.png") +
+                         " --min-ssim 0 --min-psnr 0 --max-pixels-over 1000000").code, 0);
+    for (const char* bad : {"--pixel-threshold 300", "--min-ssim 2", "--max-pixels-over -1", "--min-ssim abc", "extra.png"}) {
+        const auto r = runProcess(tool + " " + tempPath("p_a.png") + " " + tempPath("p_a.png") + " " + bad);
+        EXPECT_EQ(r.code, 2) << bad << "\n" << r.out;
+    }
+    const auto missing = runProcess(tool + " " + tempPath("p_a.png") + " " + tempPath("absent.png"));
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_NE(missing.out.find(tempPath("absent.png") + ": cannot open PNG"), std::string::npos) << missing.out;
 }

@@ -5,6 +5,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <cmath>
 #include <iostream>
 
 namespace po = boost::program_options;
@@ -37,6 +38,11 @@ int main(int argc, char** argv) {
             return 0;
         }
         if (ref.empty() || act.empty()) throw po::error("two PNG files are needed");
+        if (!(t.minSsim >= -1 && t.minSsim <= 1)) throw po::error("--min-ssim must be in [-1, 1]");
+        if (std::isnan(t.minPsnr)) throw po::error("--min-psnr must be a number");
+        if (t.maxChannelDiff < 0 || t.maxChannelDiff > 255) throw po::error("--max-channel-diff must be in [0, 255]");
+        if (t.pixelThreshold < 0 || t.pixelThreshold > 255) throw po::error("--pixel-threshold must be in [0, 255]");
+        if (t.maxPixelsOver < 0) throw po::error("--max-pixels-over must not be negative");
     } catch (const po::error& e) {
         std::cerr << "obscura_imgcompare: " << e.what() << "\n" << desc;
         return 2;
@@ -48,7 +54,7 @@ int main(int argc, char** argv) {
         for (const auto& s : f) std::cout << "FAIL: " << s << "\n";
         if (!reportDir.empty()) {
             ReportEntry e{name, ref, act, m, t, f};
-            std::cout << "report: " << writeReport(reportDir, name, {e}, "", "") << "\n";
+            std::cout << "report: " << writeReport(reportDir, name, {e}) << "\n";
         }
         return f.empty() ? 0 : 1;
     } catch (const std::exception& e) {
