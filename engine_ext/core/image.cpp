@@ -23,7 +23,9 @@ Image readPng(const std::string& path) {
         png_destroy_read_struct(&png, &info, nullptr);
         throw ImageError(path + ": libpng initialisation failed");
     }
+    // Everything with a destructor lives before setjmp: a longjmp back here must not skip one.
     Image im;
+    std::vector<png_bytep> rows;
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_read_struct(&png, &info, nullptr);
         throw ImageError(path + ": corrupt PNG");
@@ -40,7 +42,7 @@ Image readPng(const std::string& path) {
     im.width = static_cast<int>(png_get_image_width(png, info));
     im.height = static_cast<int>(png_get_image_height(png, info));
     im.rgba.resize(static_cast<std::size_t>(im.width) * im.height * 4);
-    std::vector<png_bytep> rows(static_cast<std::size_t>(im.height));
+    rows.resize(static_cast<std::size_t>(im.height));
     for (int y = 0; y < im.height; ++y) rows[static_cast<std::size_t>(y)] = &im.rgba[static_cast<std::size_t>(y) * im.width * 4];
     png_read_image(png, rows.data());
     png_destroy_read_struct(&png, &info, nullptr);
