@@ -1,16 +1,27 @@
 #!/usr/bin/python3
 """Generates media/levels/arena.map, Obscura's default level, as a Valve-220 Quake map.
 
-Run: /usr/bin/python3 tools/levelgen/make_arena.py > media/levels/arena.map
+Run: /usr/bin/python3 tools/levelgen/make_arena.py media/levels/arena.map   (or no argument: stdout)
+     /usr/bin/python3 tools/levelgen/make_arena.py --plan   (the ASCII top view in the README)
 Everything below is in metres (Quake axes: x east, y north, z up); the writer converts to map
 units at 32 units per metre. See media/levels/README.md for the plan.
+
+Format: Valve-220 as TrenchBroom writes it (one face per line,
+`( x y z ) ( x y z ) ( x y z ) TEXTURE [ ux uy uz uoff ] [ vx vy vz voff ] rot sx sy`); the three
+points of a face are ordered so that normalize(cross(p3 - p1, p2 - p1)) points out of the brush.
+The self-check at the end (levelcheck.py) proves every brush closed and outward, finds overlaps,
+leaks and entities stuck in walls, and refuses to write a map that fails.
 """
+import math
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ beside the sources
+from levelcheck import Brush, LevelError, check_level  # noqa: E402
 
 UNITS = 32  # map units per metre (worldspawn "units_per_metre")
 
-brushes = []   # (list of face lines)
-entities = []  # (dict, list of brushes)
+brushes = []   # worldspawn brushes: lists of faces (see face())
+entities = []  # point entities: dicts of keys in file order
 
 
 def u(m):
@@ -30,8 +41,13 @@ def axes(normal):
 
 
 def face(p1, p2, p3, tex, normal):
-    pts = " ".join(f"( {u(a)} {u(b)} {u(c)} )" for a, b, c in (p1, p2, p3))
-    return f"{pts} {tex} {axes(normal)} 0 1 1"
+    """One face: three points in metres (converted to units here), texture, orientation tag."""
+    return (tuple(tuple(u(c) for c in p) for p in (p1, p2, p3)), tex, normal)
+
+
+def face_line(f):
+    pts, tex, normal = f
+    return " ".join(f"( {a} {b} {c} )" for a, b, c in pts) + f" {tex} {axes(normal)} 0 1 1"
 
 
 def box(x0, y0, z0, x1, y1, z1, tex, top=None, bottom=None):
@@ -50,9 +66,16 @@ def box(x0, y0, z0, x1, y1, z1, tex, top=None, bottom=None):
     ]
 
 
+MAX_RAMP_DEGREES = 30  # the level brief's limit; the player controller is tested walking up 30 degrees
+
+
 def ramp_x(x0, x1, y0, y1, zb, z0, z1, tex):
-    """A ramp rising along +x from height z0 at x0 to z1 at x1 (bottom at zb)."""
-    faces = box(x0, y0, zb, x1, y1, z1, tex)
+    """A ramp rising along +x from height z0 at x0 to z1 at x1, bottom at zb: a 5-face wedge when
+    it starts at its bottom (z0 == zb), else a 6-face box with a sloped top."""
+    assert zb <= z0 < z1, (zb, z0, z1)
+    assert (z1 - z0) <= (x1 - x0) * math.tan(math.radians(MAX_RAMP_DEGREES)), f"ramp steeper than {MAX_RAMP_DEGREES} degrees"
+    faces = [f for f in box(x0, y0, zb, x1, y1, z1, tex)
+             if f[2] != "+z" and not (f[2] == "-x" and z0 == zb)]
     # Slope plane through (x0, y0, z0), (x0, y1, z0), (x1, y0, z1); normal up and towards -x.
     faces.append(face((x0, y0, z0), (x0, y1, z0), (x1, y0, z1), tex, "+z"))
     return faces
@@ -64,6 +87,7 @@ def add(b):
 
 def stairs_y(x0, x1, y0, z0, steps, rise, run, tex):
     """Steps climbing towards +y from (y0, z0): each `rise` high and `run` deep."""
+    assert rise <= 0.45, "the player steps up 0.45 m at most"
     for i in range(steps):
         add(box(x0, y0 + i * run, z0, x1, y0 + (i + 1) * run, z0 + (i + 1) * rise, tex))
 
@@ -71,9 +95,8 @@ def stairs_y(x0, x1, y0, z0, steps, rise, run, tex):
 def wall_with_doors(axis, fixed, a0, a1, z0, z1, thick, tex, doors):
     """A wall along `axis` ('x' or 'y') from a0 to a1 at `fixed` (its inner face), `thick` metres
     thick outwards (sign of thick says which side), split around doors [(start, width, height)]."""
-    cuts = sorted(doors)
     segs, pos = [], a0
-    for start, width, height in cuts:
+    for start, width, height in sorted(doors):
         if start > pos:
             segs.append((pos, start, z0, z1))
         segs.append((start, start + width, z0 + height, z1))  # lintel
@@ -103,17 +126,16 @@ def room(x0, y0, x1, y1, height, wall, floor, ceiling, doors=None, t=0.5):
 
 
 def entity(classname, **keys):
-    d = {"classname": classname}
-    for k, v in keys.items():
-        d[k.replace("__", "_").lstrip("_") if not k.startswith("_") else k] = v
-    entities.append(d)
+    entities.append({"classname": classname, **keys})
 
 
 def point(x, y, z):
     return f"{u(x)} {u(y)} {u(z)}"
 
 
-DOOR_W, DOOR_H = 1.5, 2.25  # doorway 1.5 m wide, 2.25 m high (the player is 1.8 m)
+# Doorways: 1.5 m wide, 2.25 m high (the player is 1.8 m; 72 units keeps the grid integral). The
+# two corridor mouths of the 2 m corridor between room A and the courtyard are the corridor's width.
+DOOR_W, DOOR_H = 1.5, 2.25
 
 # --- Courtyard: 24 x 24 m, open to the sky, 12 m brick walls. The east wall's inner face is the
 # free wall for the back-lit sign.
@@ -126,7 +148,7 @@ wall_with_doors("y", CX1, CY0, CY1, 0, 12, 0.5, "brick", [])  # east: the sign w
 # Thin pillars (0.25 m square, 5 m tall): the classic SSAO stress case.
 for i in range(4):
     add(box(23 + i * 1.5, 36, 0, 23.25 + i * 1.5, 36.25, 5, "stone"))
-# A ramp along the north wall up to a 3 m walkway in the north-east corner (14 degrees).
+# A ramp along the north wall up to a 3 m walkway in the north-east corner (3 m over 12 m: 14 deg).
 add(ramp_x(28, 40, 41, 44, 0, 0, 3, "concrete"))
 add(box(40, 40, 0, 44, 44, 3, "concrete"))
 # A low wall to take cover behind.
@@ -145,13 +167,14 @@ room(2, 22, 16, 34, 4, "plaster", "tile_floor", "plaster",
 for i in range(3):  # crates in room A
     entity("prop_crate", origin=point(5 + i * 1.25, 25, 0), size="0.75")
 
-# --- Corridor north from room A to room B: 3 m wide, 4 m long.
+# --- Corridor north from room A to room B: 2.5 m wide, 3 m long, 3.5 m high.
 add(box(7.5, 34.5, -0.5, 10, 37.5, 0, "concrete", top="tile_floor"))
 add(box(7, 34.5, 0, 7.5, 37.5, 3.5, "plaster"))
 add(box(10, 34.5, 0, 10.5, 37.5, 3.5, "plaster"))
 add(box(7, 34.5, 3.5, 10.5, 37.5, 4.0, "plaster"))
 
-# --- Room B: 14 x 14 m, 6 m high, with stairs (10 x 0.25 m) up to a 2.5 m mezzanine.
+# --- Room B: 14 x 14 m, 6 m high, with stairs (10 steps of 0.25 m rise, 0.375 m run: 12 units, the
+# first whole-unit tread at least 0.35 m deep) up to a 2.5 m mezzanine.
 room(2, 38, 16, 52, 6, "plaster", "wood_trim", "plaster", doors={"s": [(8.0, DOOR_W, DOOR_H)]})
 stairs_y(12, 15.5, 40, 0, 10, 0.25, 0.375, "wood_trim")
 add(box(2, 43.75, 2.25, 16, 52, 2.5, "wood_trim"))  # mezzanine floor
@@ -169,8 +192,9 @@ add(box(30, 9.5, -0.5, 32.5, 19.5, 0, "concrete", top="metal_floor"))
 add(box(29.5, 9.5, 0, 30, 19.5, 3, "concrete"))
 add(box(32.5, 9.5, 0, 33, 19.5, 3, "concrete"))
 add(box(29.5, 9.5, 3, 33, 19.5, 3.5, "concrete"))
-# Clip brush: keeps players off the top of the booth counter.
-add(box(14, 3, 1.125, 14.5, 7.5, 2.5, "clip"))
+# Clip brush: an invisible 1 m railing along the open south edge of the courtyard walkway (players
+# do not walk off the 3 m ledge; bullets pass over the booth counter, which stays unclipped).
+add(box(40, 39.75, 3, 44, 40, 4, "clip"))
 
 # --- Sky box: the whole level sits inside it (the map is sealed).
 S0, S1, TOP = -2, 62, 16
@@ -181,39 +205,93 @@ add(box(S1, S0, -1.5, S1 + 0.5, S1, TOP + 0.5, "sky"))
 add(box(S0, S0 - 0.5, -1.5, S1, S0, TOP + 0.5, "sky"))
 add(box(S0, S1, -1.5, S1, S1 + 0.5, TOP + 0.5, "sky"))
 
-# --- Entities.
+# A trigger volume (invisible, not solid) at the range end of the smoke-test corridor, to exercise
+# the brush-entity classes.
+TRIGGER = box(30, 9.5, 0, 32.5, 10.5, 2.5, "trigger")
+
+# --- Point entities. A Quake player origin is the body centre, 24 units (0.75 m) above the feet.
 entity("info_player_start", origin=point(26, 24, 0.75), angle="135")  # courtyard, facing the west door
-entity("info_sign", origin=point(44, 32, 4), angle="180", text="OBSCURA", width="5", height="1.5")
+# The sign: on the east wall's inner face (x = 44), centred 4 m up, facing west into the courtyard.
+SIGN = dict(x=44, y=32, z=4, width=5, height=1.5)
+entity("info_sign", origin=point(SIGN["x"], SIGN["y"], SIGN["z"]), angle="180", text="OBSCURA",
+       width=str(SIGN["width"]), height=str(SIGN["height"]))
 for x, y, z, l in [(6, 25, 3.5, 280), (12, 31, 3.5, 280), (9, 45, 5.5, 320), (9, 50, 2, 220),
                    (18, 28.25, 3, 200), (8.75, 36, 3, 200), (31.25, 14.5, 2.5, 220), (31.25, 22, 2.5, 200)]:
-    entity("light", origin=point(x, y, z), light=str(l), _color="1 0.92 0.8")
+    entity("light", origin=point(x, y, z), light=str(l), _color="1 0.92 0.8")  # warm indoor lamps
 for x in (16, 26, 36, 46):
-    entity("light", origin=point(x, 6, 4.5), light="300", _color="0.95 0.97 1")
-entity("info_player_deathmatch", origin=point(40, 30, 0.75), angle="180")
+    entity("light", origin=point(x, 6, 4.5), light="300", _color="0.95 0.97 1")  # cool range strip lights
+# A second spawn point in the courtyard's south-east, clear of the sign's 8 m apron.
+entity("info_player_deathmatch", origin=point(40, 24, 0.75), angle="90")
+
+WORLDSPAWN = [("classname", "worldspawn"), ("mapversion", "220"), ("message", "Obscura arena"),
+              ("units_per_metre", str(UNITS)),
+              # Sun from the north-north-west (travelling towards yaw -60), 55 degrees up: it lights
+              # the sign wall (facing west) and lets the north wall shade part of the courtyard.
+              ("_sunlight", "220"), ("_sun_mangle", "-60 -55 0"), ("_sunlight_color", "255 240 220"),
+              ("_sunlight2", "120"), ("_sunlight2_color", "200 215 255")]  # bluish sky-dome fill
 
 
 def write(out):
     out.write("// Game: Quake\n// Format: Valve\n// Generated by tools/levelgen/make_arena.py: edit the script, not this file.\n")
     out.write("// entity 0\n{\n")
-    for k, v in [("classname", "worldspawn"), ("mapversion", "220"), ("message", "Obscura arena"),
-                 ("units_per_metre", str(UNITS)), ("_sunlight", "220"), ("_sun_mangle", "-60 -55 0"),
-                 ("_sunlight_color", "255 240 220"), ("_sunlight2", "120"), ("_sunlight2_color", "200 215 255")]:
+    for k, v in WORLDSPAWN:
         out.write(f'"{k}" "{v}"\n')
     for i, b in enumerate(brushes):
-        out.write(f"// brush {i}\n{{\n" + "\n".join(b) + "\n}\n")
+        out.write(f"// brush {i}\n{{\n" + "\n".join(face_line(f) for f in b) + "\n}\n")
     out.write("}\n")
-    # A trigger volume (invisible, not solid) at the range door, to exercise brush-entity classes.
-    out.write('// entity 1\n{\n"classname" "trigger_multiple"\n{\n' + "\n".join(box(30, 9.5, 0, 32.5, 10.5, 2.5, "trigger")) + "\n}\n}\n")
+    out.write('// entity 1\n{\n"classname" "trigger_multiple"\n{\n' + "\n".join(face_line(f) for f in TRIGGER) + "\n}\n}\n")
     for i, e in enumerate(entities):
         out.write(f"// entity {i + 2}\n{{\n" + "".join(f'"{k}" "{v}"\n' for k, v in e.items()) + "}\n")
 
 
-def check():
-    for b in brushes:
-        assert len(b) in (6, 7), "every brush is a box or a ramp"
-    assert len(brushes) < 400
+def plan(out, step_x=1, step_y=1, z=1):
+    """Top view in a band at height z..z+0.5 m, one character per step_x by step_y metres:
+    '#' walls (taller than the band), '-' low things (counter, cover, stair steps), 'c' clip, and
+    the point entities on top: P player start, D deathmatch start, S sign, x crates, * lights."""
+    solids = [Brush(b, "") for b in brushes if b[0][1] != "sky"]
+    marks = {"info_player_start": "P", "info_player_deathmatch": "D", "info_sign": "S", "prop_crate": "x", "light": "*"}
+    cols, rows = 55, 55
+    grid = [[" "] * cols for _ in range(rows)]
+    for r in range(rows):
+        for c in range(cols):
+            lo = (c * step_x * UNITS, r * step_y * UNITS, z * UNITS)
+            hi = ((c + 1) * step_x * UNITS, (r + 1) * step_y * UNITS, z * UNITS + UNITS // 2)
+            for b in solids:
+                if b.overlaps_box(lo, hi):
+                    grid[r][c] = "c" if "clip" in b.textures else ("-" if b.hi[2] <= hi[2] else "#")
+    for e in entities:
+        x, y, _ = (int(v) / UNITS for v in e["origin"].split())
+        c, r = min(int(x / step_x), cols - 1), min(int(y / step_y), rows - 1)
+        grid[r][c] = marks.get(e["classname"], "?")
+    for r in reversed(range(rows)):  # north up; each row is labelled with its southern edge
+        if "".join(grid[r]).strip():
+            out.write(f"{r * step_y:3d} {''.join(grid[r]).rstrip()}\n")
+    out.write("    " + "".join(f"{c:<10d}" for c in range(0, cols, 10)) + "\n")
 
 
-check()
-write(sys.stdout)
-print(f"make_arena: {len(brushes)} brushes, {len(entities) + 2} entities", file=sys.stderr)
+def main(args):
+    if args == ["--plan"]:
+        plan(sys.stdout)
+        return 0
+    if len(args) > 1 or (args and args[0].startswith("-")):
+        print("usage: make_arena.py [OUT.map] | --plan", file=sys.stderr)
+        return 2
+    try:
+        report = check_level(brushes, [TRIGGER], entities, UNITS, sign=SIGN,
+                             required_textures={"brick", "concrete", "plaster", "tile_floor", "metal_floor",
+                                                "wood_trim", "stone", "sky", "clip"})
+    except LevelError as e:
+        print(f"make_arena: check failed, nothing written: {e}", file=sys.stderr)
+        return 1
+    if args:
+        with open(args[0], "w") as out:
+            write(out)
+    else:
+        write(sys.stdout)
+    print(f"make_arena: {len(brushes) + 1} brushes ({len(brushes)} world + 1 trigger), "
+          f"{len(entities) + 2} entities; {report}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
