@@ -1,4 +1,6 @@
-// See texgen.h.
+// Procedural level textures from texture names: see texgen.h. Every colour below is an sRGB
+// albedo; the base values follow measured albedo charts for the material (red brick ~0.55/0.27/0.18,
+// concrete ~0.55 grey, plaster ~0.7 warm white, ...), the multipliers are the per-texel variation.
 #include "texgen/texgen.h"
 
 #include "core/rng.h"
@@ -47,7 +49,9 @@ private:
     std::vector<float> values_;
 };
 
-// Fractal sum of periodic octaves (4, 8, 16, 32 cells...), normalised to 0..1.
+// Fractal sum of periodic octaves (4, 8, 16, 32 cells...), normalised to 0..1. Gain 0.5 per
+// octave (the classic 1/f fBm): each finer octave adds half the contrast, so detail never turns
+// into per-texel noise that aliases.
 class Fbm {
 public:
     Fbm(std::uint64_t seed, int baseCells, int octaves) {
@@ -104,22 +108,30 @@ double mortar(double u, double v, int cols, int rows, bool staggered, int& cell)
 using Shader = std::function<Colour(double u, double v)>;
 
 Shader styleFor(const std::string& name, std::uint32_t seed) {
+    // Large-scale blotches: 4 cells per tile (32 texels at 128) and 5 octaves down to 2 texels.
     auto fbm = std::make_shared<Fbm>(seed, 4, 5);
+    // Fine grain: 16..64 cells per tile, a separate stream (golden-ratio constant) so it does not
+    // correlate with the blotches.
     auto fine = std::make_shared<Fbm>(seed ^ 0x9e3779b9u, 16, 3);
     Rng rng(seed);
+    // +-0.04 red shift per name, so two brick walls with different names are not identical.
     const double tint = rng.uniform(-0.04f, 0.04f);
     if (has(name, "sky")) {
+        // Blue sky (0.42, 0.58, 0.82) with white clouds where the fBm exceeds 0.45 (about half
+        // the sky), ramping over 0.4 of noise range so cloud edges stay soft.
         return [fbm](double u, double v) {
             const double c = fbm->at(u, v);
             return mix(Colour{0.42, 0.58, 0.82}, Colour{0.86, 0.9, 0.95}, std::clamp((c - 0.45) * 2.5, 0.0, 1.0));
         };
     }
-    if (!name.empty() && name[0] == '*') {  // liquids
+    if (!name.empty() && name[0] == '*') {  // liquids: base colour +-25 % by the fBm (ripples)
         const Colour base = has(name, "lava") ? Colour{0.75, 0.28, 0.06} : has(name, "slime") ? Colour{0.25, 0.5, 0.15}
                                                                                           : Colour{0.15, 0.32, 0.45};
         return [fbm, base](double u, double v) { return base * (0.75 + 0.5 * fbm->at(u, v)); };
     }
     if (has(name, "light")) {
+        // A light panel: a bright diffuser (0.8, not white: it is an albedo, the glow is the
+        // light's job) inside a grey metal frame 8 % of the tile wide.
         return [fine](double u, double v) {
             int cell;
             const double d = mortar(u, v, 1, 1, false, cell);
@@ -136,10 +148,11 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
             const double shade = 0.8 + 0.35 * r.uniform01();
             const Colour brick = Colour{0.55 + tint, 0.27, 0.18} * shade * (0.85 + 0.3 * fine->at(u, v));
             const Colour mortarC = Colour{0.62, 0.6, 0.55} * (0.9 + 0.2 * fbm->at(u, v));
-            return d < 0.007 ? mortarC : brick;
+            return d < 0.007 ? mortarC : brick;  // mortar joints ~2 texels wide at 128
         };
     }
     if (has(name, "tile")) {
+        // 4 x 4 ceramic tiles, each +-6 % in brightness, with dark grout lines ~2 texels wide.
         return [fine, seed](double u, double v) {
             int cell;
             const double d = mortar(u, v, 4, 4, false, cell);
@@ -149,6 +162,8 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
         };
     }
     if (has(name, "metal") || has(name, "plate") || has(name, "tech")) {
+        // Steel floor plates (grey 0.46..0.5): 2 x 2 plates with dark seams, a diamond tread of 16
+        // lozenges per plate edge (8 texels each at 128: coarse enough not to alias).
         return [fbm, fine](double u, double v) {
             int cell;
             const double d = mortar(u, v, 2, 2, false, cell);
@@ -160,6 +175,8 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
         };
     }
     if (has(name, "wood") || has(name, "crate") || has(name, "plank")) {
+        // Four planks per tile with dark gaps; grain = 12 warped sine bands per plank, a random
+        // phase and brightness per plank. Colours between dark and light pine-brown.
         return [fbm, fine, seed](double u, double v) {
             int cell;
             const double d = mortar(u, v, 1, 4, false, cell);
@@ -170,6 +187,7 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
         };
     }
     if (has(name, "stone") || has(name, "rock") || has(name, "cobble")) {
+        // 3 x 3 staggered flagstones, each +-15 % in brightness, mottled by the fBm, dark joints.
         return [fbm, fine, seed](double u, double v) {
             int cell;
             const double d = mortar(u, v, 3, 3, true, cell);
@@ -179,6 +197,7 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
         };
     }
     if (has(name, "grass") || has(name, "ground") || has(name, "dirt")) {
+        // Olive green between dry and fresh grass; no structure, so it tiles without a visible grid.
         return [fbm, fine](double u, double v) {
             return mix(Colour{0.32, 0.36, 0.16}, Colour{0.44, 0.52, 0.22}, 0.6 * fbm->at(u, v) + 0.4 * fine->at(u, v));
         };
@@ -187,16 +206,20 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
         return [fbm, fine](double u, double v) {
             int cell;
             const double d = mortar(u, v, 1, 1, false, cell);  // a form-work seam per tile
+            // Grey concrete, 0.82..1.19 by the stains and grain.
             const Colour c = Colour{0.56, 0.55, 0.52} * (0.82 + 0.25 * fbm->at(u, v) + 0.12 * fine->at(u, v));
             return d < 0.004 ? c * 0.7 : c;
         };
     }
     if (has(name, "plaster") || has(name, "wall")) {
+        // Warm off-white plaster, only +-8 % variation: a plain wall (the sign test reads it).
         return [fbm, fine, tint](double u, double v) {
             return Colour{0.74 + tint, 0.7, 0.62} * (0.9 + 0.12 * fbm->at(u, v) + 0.05 * fine->at(u, v));
         };
     }
-    // Unknown name: a muted colour from its hash, faint noise and a grid every quarter tile.
+    // Unknown name: a muted colour from its hash (saturation 0.25..0.5, value 0.45..0.7: not
+    // garish, not dark), faint noise (+-10 %) and a grid every quarter tile, 20 % darker, so the
+    // texture's scale reads on a surface.
     const double hue = (seed & 0xffff) / 65536.0;
     const double sat = 0.25 + 0.25 * ((seed >> 16) & 0xff) / 255.0;
     const double val = 0.45 + 0.25 * ((seed >> 24) & 0xff) / 255.0;
@@ -223,7 +246,9 @@ std::uint32_t nameHash(const std::string& name) {
 }
 
 Image generateTexture(const std::string& textureName, int size) {
-    size = std::clamp(size, 8, 2048);
+    if (size < kMinSize || size > kMaxSize)
+        throw TexgenError("texgen: texture '" + textureName + "': size " + std::to_string(size) + " outside " +
+                          std::to_string(kMinSize) + ".." + std::to_string(kMaxSize));
     const std::string name = lower(textureName);
     const std::uint32_t seed = nameHash(name);
     const Shader shade = styleFor(name, seed);
