@@ -1,20 +1,31 @@
 // The Bullet world, owned RAII: collision configuration, dispatcher, broadphase, solver, world,
-// and every shape, motion state and body created through it (destroyed in reverse order).
-// Static level geometry: one convex hull per solid brush, triangle meshes for misc_models.
-// Dynamic props: boxes. Plus the queries the game needs (capsule sweeps, rays).
+// and every shape, mesh, motion state and body created through it (bodies leave the world before
+// anything they point at dies). Static level geometry: one btConvexHullShape per solid brush,
+// btBvhTriangleMeshShape for misc_model triangles. Dynamic props: `prop_crate` boxes. Plus the
+// queries the game needs: convex sweeps (the player's capsule) and rays (hitscan).
 // Stepped with a fixed dt and one substep, Bullet 3.24 is bit-identical run to run.
 #pragma once
 
 #include "core/triangle_mesh.h"
 #include "core/vec3.h"
+#include "map/level.h"
 
 #include <btBulletDynamicsCommon.h>
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace obscura::sim {
+
+using obscura::TriangleMesh;
+
+// Bad input to the simulation (a malformed level or mesh); the message names file:line:column.
+struct SimError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 inline btVector3 toBt(const Vec3& v) {
     return {static_cast<btScalar>(v.x), static_cast<btScalar>(v.y), static_cast<btScalar>(v.z)};
@@ -23,14 +34,21 @@ inline Vec3 fromBt(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 struct RayHit {
     Vec3 point;
-    Vec3 normal;
-    double fraction = 1;
-    int dynamicBody = -1;  // index of the dynamic body hit, or -1 for static geometry
+    Vec3 normal;            // unit, facing the ray's origin
+    double fraction = 1;    // 0..1 along the ray
+    int dynamicBody = -1;   // index of the dynamic body hit, or -1 for static geometry
 };
 
 struct SweepHit {
     double fraction = 1;  // 0..1 along the sweep
-    Vec3 normal;          // surface normal at the hit, pointing at the swept shape
+    Vec3 point;           // contact point on the surface hit
+    Vec3 normal;          // unit surface normal at the hit, pointing at the swept shape
+    int dynamicBody = -1;
+};
+
+struct ShapeContact {
+    Vec3 normal;          // unit, pushing the shape out of (away from) what it touches
+    double distance = 0;  // gap between the surfaces; negative when overlapping
     int dynamicBody = -1;
 };
 
@@ -41,33 +59,49 @@ public:
     PhysicsWorld(const PhysicsWorld&) = delete;
     PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
-    void addStaticHull(const std::vector<Vec3>& points);
+    // A level's colliders: a convex hull per solid brush (non-solid ones are skipped) and a box per
+    // `prop_crate` entity (keys `size` in metres, default 0.75, and `mass` in kg, default 20; the
+    // origin marks the crate's base). Throws SimError naming level.sourcePath:line:column.
+    void addLevel(const map::Level& level);
+    // `where` names the source for error messages ("file:line:column").
+    void addStaticHull(const std::vector<Vec3>& points, const std::string& where = "hull");
+    // World-space triangles (misc_model colliders). Throws SimError on an out-of-range index.
     void addStaticTriangleMesh(const TriangleMesh& mesh);
     // Returns the index of the new dynamic body.
     int addDynamicBox(const Vec3& centre, const Vec3& halfExtents, double mass, double yaw);
 
     void step(double dt);
 
+    // Closest hit along the segment, or nothing.
     std::optional<RayHit> rayCast(const Vec3& from, const Vec3& to) const;
-    // Sweeps `shape` (a convex shape, e.g. the player's capsule) from `from` to `to` (centres).
+    // Sweeps `shape` (convex, unrotated, e.g. the player's capsule) from centre `from` to `to`:
+    // the closest surface the shape moves *into*. Surfaces it touches and moves along (within
+    // 0.06 degrees) or away from are ignored, so a shape resting on a floor or against a wall is
+    // always free to leave it.
     std::optional<SweepHit> sweep(const btConvexShape& shape, const Vec3& from, const Vec3& to) const;
+    // Every such hit (one per convex body or triangle), closest first.
+    std::vector<SweepHit> sweepAll(const btConvexShape& shape, const Vec3& from, const Vec3& to) const;
+    // Surfaces overlapping `shape` (unrotated, at `centre`) or nearer than `within` metres.
+    std::vector<ShapeContact> contacts(const btConvexShape& shape, const Vec3& centre, double within) const;
 
+    std::size_t staticBodyCount() const { return static_.size(); }
     std::size_t dynamicBodyCount() const { return dynamic_.size(); }
-    btRigidBody& dynamicBody(std::size_t i) const { return *dynamic_[i]; }
-    Vec3 dynamicHalfExtents(std::size_t i) const { return halfExtents_[i]; }
-    int dynamicIndexOf(const btCollisionObject* o) const;
+    btRigidBody& dynamicBody(std::size_t i) const { return *dynamic_.at(i); }
+    Vec3 dynamicHalfExtents(std::size_t i) const { return halfExtents_.at(i); }
 
 private:
+    void addStatic(std::unique_ptr<btCollisionShape> shape);
+
     std::unique_ptr<btDefaultCollisionConfiguration> config_;
     std::unique_ptr<btCollisionDispatcher> dispatcher_;
     std::unique_ptr<btDbvtBroadphase> broadphase_;
     std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
     std::unique_ptr<btDiscreteDynamicsWorld> world_;
 
+    // Destroyed in reverse order of declaration: bodies first, then what they reference.
+    struct MeshData;
+    std::vector<std::unique_ptr<MeshData>> meshes_;
     std::vector<std::unique_ptr<btCollisionShape>> shapes_;
-    std::vector<std::unique_ptr<btTriangleIndexVertexArray>> meshInterfaces_;
-    std::vector<std::unique_ptr<std::vector<btScalar>>> meshVertices_;
-    std::vector<std::unique_ptr<std::vector<int>>> meshIndices_;
     std::vector<std::unique_ptr<btDefaultMotionState>> motionStates_;
     std::vector<std::unique_ptr<btRigidBody>> static_;
     std::vector<std::unique_ptr<btRigidBody>> dynamic_;

@@ -8,212 +8,336 @@ namespace obscura::sim {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-// Distance kept between the body and what it touched, so the next sweep never starts in
-// contact (Bullet then reports fraction 0 and the player would stick). 5 mm is invisible.
+const Vec3 kUp{0, 1, 0};
+// Gap kept between the capsule and what it touched, so the next sweep does not start in contact
+// (Bullet then reports fraction 0 and the player would stick). 5 mm is invisible.
 constexpr double kSkin = 0.005;
-// A ground probe this far below the feet decides "on ground" (covers the skin and float noise).
+// A ground probe this far below the capsule decides "on ground": covers the skin and float noise.
 constexpr double kGroundProbe = 0.03;
+// Sweep hits within 1 cm of the nearest are touched together (a floor meeting a slope's foot):
+// any of them may hold the player up.
+constexpr double kGroundTolerance = 0.01;
+// Moving away from the ground faster than this (m/s) is leaving it: a jump, a launch off a ramp.
+// Quake III's 10 u/s; the 1.001 overclip of a landing leaves a few cm/s, well below.
+constexpr double kLeaveGroundSpeed = 0.3;
+// Overlaps (a crate shoved into the player, a start pose inside a wall, float creep) are pushed
+// out along the deepest contact's normal, one at a time; 4 covers a corner of walls and floor.
+constexpr int kDepenetrationIterations = 4;
 // Pitch stops just short of straight up/down, where yaw would become ill-defined.
 constexpr double kMaxPitch = 89.0 * kPi / 180.0;
-// Grounded this few ticks ago and not rising: still follow the ground down. Covers a flat-bottomed
-// body grazing a stair's edge for a tick on the way down.
-constexpr int kFollowGroundTicks = 2;
-// Slide iterations per move: Quake's 4 handles a corner between two walls and a floor.
+// Slide iterations per sub-step: Quake's 4 handles a corner between two walls and a floor.
 constexpr int kSlideIterations = 4;
+// A sub-step moves at most half the radius, so a fast fall is split into short sweeps; the cap
+// bounds the work at absurd speeds (terminal velocity at 60 Hz needs 5).
+constexpr double kMaxSubstepRadii = 0.5;
+constexpr int kMaxSubsteps = 32;
+// Quake's overclip: push a hair off each plane, so float error never leaves motion into it.
+constexpr double kOverclip = 1.001;
+// Edge support: a contact on the round bottom's lower part (normal y >= 0.3, within 0.95 r of the
+// axis, about how far a Quake box hangs over a ledge) holds the player if the surface 2 cm beyond
+// the contact, read by a ray from 5 cm above it, is walkable and level with the contact.
+constexpr double kMinEdgeNormalY = 0.3;
+constexpr double kEdgeProbeOut = 0.02, kEdgeProbeUp = 0.05, kEdgeLevelTolerance = 0.01;
+// Step-up moves forward at least this far, so a player pressing against a step from standstill
+// (a few mm per tick) gets the capsule's round bottom over the edge far enough to stand on it.
+constexpr double kMinStepForward = 0.05;
+// Hull margins and the skin put a step's top a few mm off its nominal height.
+constexpr double kStepHeightTolerance = 0.01;
+// The stepped move must beat the plain one by more than float noise to be taken.
+constexpr double kStepProgressEpsilon = 1e-4;
 
 Vec3 horizontal(const Vec3& v) { return {v.x, 0, v.z}; }
 
+double finiteOr0(double v) { return std::isfinite(v) ? v : 0.0; }
+
+// Garbage in (NaN from a broken input device, out-of-range axes) must not reach the physics.
+PlayerCommand sanitized(PlayerCommand c) {
+    c.forward = static_cast<float>(std::clamp(finiteOr0(c.forward), -1.0, 1.0));
+    c.right = static_cast<float>(std::clamp(finiteOr0(c.right), -1.0, 1.0));
+    c.yawDelta = static_cast<float>(finiteOr0(c.yawDelta));
+    c.pitchDelta = static_cast<float>(finiteOr0(c.pitchDelta));
+    return c;
+}
+
+// Quake's PM_Accelerate: add speed along wishDir up to wishSpeed, at most accel * wishSpeed * dt.
 void accelerate(Vec3& vel, const Vec3& wishDir, double wishSpeed, double accel, double dt) {
-    const double current = dot(vel, wishDir);
-    const double add = wishSpeed - current;
+    const double add = wishSpeed - dot(vel, wishDir);
     if (add <= 0) return;
     vel += wishDir * std::min(accel * dt * wishSpeed, add);
 }
 
-// Removes the part of v going into the plane (with a hair of overbounce, as Quake's ClipVelocity).
+// Removes the part of v going into the plane (Quake's PM_ClipVelocity).
 Vec3 clipToPlane(const Vec3& v, const Vec3& n) {
     const double into = dot(v, n);
-    if (into >= 0) return v;
-    return v - n * (into * 1.001);
+    return into >= 0 ? v : v - n * (into * kOverclip);
+}
+
+// Keeps v on the plane without losing speed (running up or down a ramp at full speed).
+Vec3 alongPlane(const Vec3& v, const Vec3& n) {
+    const double speed = length(v);
+    const Vec3 p = v - n * dot(v, n);
+    const double l = length(p);
+    return l > 1e-9 ? p * (speed / l) : Vec3{};
 }
 }  // namespace
 
 PlayerController::PlayerController(PhysicsWorld& world, PlayerTuning tuning)
     : world_(world),
       tuning_(tuning),
-      standShape_(btVector3(static_cast<btScalar>(tuning.radius), static_cast<btScalar>(tuning.standHeight / 2),
-                            static_cast<btScalar>(tuning.radius))),
-      crouchShape_(btVector3(static_cast<btScalar>(tuning.radius), static_cast<btScalar>(tuning.crouchHeight / 2),
-                             static_cast<btScalar>(tuning.radius))),
-      minWalkNormalY_(std::cos(tuning.maxSlopeDegrees * kPi / 180.0)) {
-    // Bullet rounds a cylinder's edges by its margin (embedded in the extents); 1 cm keeps GJK
-    // stable while the bottom stays flat enough to stand on a step's edge.
-    standShape_.setMargin(0.01f);
-    crouchShape_.setMargin(0.01f);
+      // btCapsuleShape takes the cylinder part's height: total minus both caps.
+      standShape_(static_cast<btScalar>(tuning.radius), static_cast<btScalar>(tuning.standHeight - 2 * tuning.radius)),
+      crouchShape_(static_cast<btScalar>(tuning.radius), static_cast<btScalar>(tuning.crouchHeight - 2 * tuning.radius)),
+      minWalkNormalY_(std::cos(tuning.maxSlopeDegrees * kPi / 180.0)) {}
+
+PlayerController::Body PlayerController::body(bool crouching) const {
+    return crouching ? Body{&crouchShape_, tuning_.crouchHeight} : Body{&standShape_, tuning_.standHeight};
 }
 
-bool PlayerController::walkable(const Vec3& n) const { return n.y >= minWalkNormalY_; }
-
-std::optional<SweepHit> PlayerController::groundBelow(const btCylinderShape& shape, const Vec3& centre, double distance) const {
-    return world_.sweep(shape, centre, centre - Vec3{0, distance, 0});
+PlayerState PlayerController::spawn(const Vec3& feet, double yaw, double pitch) const {
+    PlayerState s;
+    s.feet = feet;
+    s.yaw = static_cast<float>(std::remainder(finiteOr0(yaw), 2 * kPi));
+    s.pitch = static_cast<float>(std::clamp(finiteOr0(pitch), -kMaxPitch, kMaxPitch));
+    s.height = static_cast<float>(tuning_.standHeight);
+    s.eyeBelowTop = static_cast<float>(tuning_.eyeBelowTop);
+    return s;
 }
 
-PlayerController::MoveResult PlayerController::slideMove(const btCylinderShape& shape, Vec3 centre, Vec3 velocity,
-                                                         double dt) const {
-    MoveResult r;
-    Vec3 delta = velocity * dt;
+bool PlayerController::supportedAt(const Body& b, const Vec3& centre, const SweepHit& hit, Vec3& surfaceNormal,
+                                   double& surfaceY) const {
+    surfaceY = hit.point.y;
+    if (walkable(hit.normal)) {
+        surfaceNormal = hit.normal;
+        return true;
+    }
+    if (hit.normal.y < kMinEdgeNormalY) return false;  // on the capsule's side: a wall or a slope
+    // The round bottom rests on an edge: look at the surface just beyond the contact.
+    const Vec3 sphere = centre - kUp * (b.height / 2 - tuning_.radius);
+    const Vec3 out = horizontal(hit.point - sphere);
+    if (length(out) < 1e-6) return false;
+    const Vec3 from = hit.point + normalize(out) * kEdgeProbeOut + kUp * kEdgeProbeUp;
+    const auto ray = world_.rayCast(from, from - kUp * (2 * kEdgeProbeUp));
+    if (!ray || !walkable(ray->normal) || ray->point.y < hit.point.y - kEdgeLevelTolerance) return false;
+    surfaceNormal = ray->normal;
+    return true;
+}
+
+Vec3 PlayerController::depenetrate(const Body& b, Vec3 centre) const {
+    for (int i = 0; i < kDepenetrationIterations; ++i) {
+        const auto contacts = world_.contacts(*b.shape, centre, 0.0);
+        const ShapeContact* deepest = nullptr;
+        for (const auto& c : contacts)
+            if (c.distance < 0 && (!deepest || c.distance < deepest->distance)) deepest = &c;
+        if (!deepest) break;
+        centre += deepest->normal * (kSkin - deepest->distance);
+    }
+    return centre;
+}
+
+PlayerController::Ground PlayerController::findGround(const Body& b, const Vec3& centre, double distance) const {
+    Ground g;
+    const auto hits = world_.sweepAll(*b.shape, centre, centre - kUp * distance);
+    if (hits.empty()) return g;
+    g.found = true;
+    g.distance = hits.front().fraction * distance;
+    g.normal = hits.front().normal;
+    for (const auto& h : hits) {
+        const double d = h.fraction * distance;
+        if (d > g.distance + kGroundTolerance) break;
+        Vec3 n;
+        double y = 0;
+        if (supportedAt(b, centre - kUp * d, h, n, y)) {
+            g.walkable = true;
+            g.normal = n;
+            g.supportY = y;
+            break;
+        }
+    }
+    return g;
+}
+
+void PlayerController::slide(const Body& b, double dt, bool grounded, Move& m) const {
+    Vec3 delta = m.moveVel * dt;
     Vec3 planes[kSlideIterations];
     int planeCount = 0;
     for (int iter = 0; iter < kSlideIterations; ++iter) {
         const double dist = length(delta);
-        if (dist < 1e-7) break;
-        const auto hit = world_.sweep(shape, centre, centre + delta);
+        if (dist < 1e-7) return;
+        const auto hit = world_.sweep(*b.shape, m.centre, m.centre + delta);
         if (!hit) {
-            centre += delta;
+            m.centre += delta;
+            return;
+        }
+        // To the contact, then off the surface by the skin along its normal: the gap to what was
+        // hit is the skin whatever the angle of approach, so sliding along it never grazes it.
+        m.centre += delta * hit->fraction + hit->normal * kSkin;
+        delta = delta * (1.0 - hit->fraction);
+        Vec3 n = hit->normal;
+        // On foot, a floor too steep to walk is a wall: sliding along it must not lift the player.
+        if (grounded && n.y > 0 && !walkable(n)) n = normalize(horizontal(n));
+        if (!walkable(n)) m.hitWall = true;
+        if (hit->dynamicBody >= 0) m.contacts.push_back({hit->dynamicBody, n});
+
+        delta = clipToPlane(delta, n);
+        m.moveVel = clipToPlane(m.moveVel, n);
+        m.vel = clipToPlane(m.vel, n);
+        // Clipping against this plane may drive into an earlier one: then only the crease
+        // between the two is free; into a third as well, nothing is (Quake's PM_SlideMove).
+        for (int p = 0; p < planeCount; ++p) {
+            if (dot(delta, planes[p]) >= 0) continue;
+            const Vec3 crease = normalize(cross(planes[p], n));
+            delta = crease * dot(delta, crease);
+            m.moveVel = crease * dot(m.moveVel, crease);
+            m.vel = crease * dot(m.vel, crease);
+            for (int q = 0; q < planeCount; ++q) {
+                if (q != p && dot(delta, planes[q]) < 0) {
+                    m.moveVel = m.vel = Vec3{};
+                    return;
+                }
+            }
             break;
         }
-        const Vec3 dir = delta / dist;
-        const double travel = std::max(0.0, hit->fraction * dist - kSkin);
-        centre += dir * travel;
-        if (!walkable(hit->normal)) r.blocked = true;
-        Vec3 remaining = delta * (1.0 - hit->fraction);
-        const Vec3 n = hit->normal;
-        remaining = clipToPlane(remaining, n);
-        velocity = clipToPlane(velocity, n);
-        // Two planes meeting in a crease: move along the crease only.
-        for (int p = 0; p < planeCount; ++p) {
-            if (dot(remaining, planes[p]) < 0) {
-                const Vec3 crease = normalize(cross(planes[p], n));
-                remaining = crease * dot(remaining, crease);
-                velocity = crease * dot(velocity, crease);
-                break;
-            }
-        }
         planes[planeCount++] = n;
-        delta = remaining;
     }
-    r.centre = centre;
-    r.velocity = velocity;
-    return r;
 }
 
-void PlayerController::pushBodies(const btCylinderShape& shape, const Vec3& centre, const Vec3& wish, double dt) const {
-    if (length(wish) < 1e-6) return;
-    const Vec3 dir = normalize(wish);
-    // Probe a little further than the skin: a crate we are leaning on gets pushed.
-    const auto hit = world_.sweep(shape, centre, centre + dir * (kSkin * 4 + tuning_.walkSpeed * dt));
-    if (!hit || hit->dynamicBody < 0) return;
-    btRigidBody& body = world_.dynamicBody(static_cast<std::size_t>(hit->dynamicBody));
-    body.activate(true);
-    body.applyCentralImpulse(toBt(dir * tuning_.pushImpulse));
+void PlayerController::move(const Body& b, double dt, bool grounded, Move& m) const {
+    const double dist = length(m.moveVel) * dt;
+    const int substeps = std::clamp(static_cast<int>(std::ceil(dist / (kMaxSubstepRadii * tuning_.radius))), 1, kMaxSubsteps);
+    for (int i = 0; i < substeps; ++i) slide(b, dt / substeps, grounded, m);
 }
 
-void PlayerController::step(PlayerState& s, const PlayerCommand& cmd, double dt) {
+bool PlayerController::stepUp(const Body& b, double dt, const Move& start, Move& result) const {
+    const double plainProgress = length(horizontal(result.centre - start.centre));
+    Move m = start;
+    // Up (as far as the ceiling allows), forward, then down onto walkable ground.
+    double lift = tuning_.stepHeight;
+    if (const auto ceiling = world_.sweep(*b.shape, m.centre, m.centre + kUp * lift))
+        lift = std::max(0.0, ceiling->fraction * lift - kSkin);
+    m.centre += kUp * lift;
+    m.moveVel = horizontal(m.moveVel);
+    m.vel = horizontal(m.vel);
+    const double forward = length(m.moveVel) * dt;
+    if (forward < 1e-9) return false;
+    if (forward < kMinStepForward) m.moveVel = m.moveVel * (kMinStepForward / forward);
+    move(b, dt, true, m);
+    const Ground land = findGround(b, m.centre, lift + kGroundProbe);
+    // A step is what the capsule stands on after the step-up, no higher than stepHeight: the round
+    // bottom could otherwise perch on the edge of a ledge up to stepHeight + radius high.
+    const double feetY = start.centre.y - b.height / 2;
+    if (!land.walkable || land.supportY > feetY + tuning_.stepHeight + kStepHeightTolerance) return false;
+    m.centre -= kUp * std::max(0.0, land.distance - kSkin);
+    if (length(horizontal(m.centre - start.centre)) <= plainProgress + kStepProgressEpsilon) return false;
+    result = m;
+    return true;
+}
+
+void PlayerController::pushBodies(const std::vector<Contact>& contacts, const Vec3& wishDir, double wishSpeed,
+                                  double dt) const {
+    std::vector<int> pushed;
+    for (const Contact& c : contacts) {
+        if (std::find(pushed.begin(), pushed.end(), c.body) != pushed.end()) continue;  // once a tick
+        const Vec3 away = horizontal(-c.normal);
+        if (length(away) < 0.1) continue;  // standing on it or bumping it from below
+        const Vec3 dir = normalize(away);
+        const double into = dot(dir, wishDir);
+        if (into <= 0) continue;  // brushed past it, not walking into it
+        pushed.push_back(c.body);
+        // Shove it towards the speed the player is walking into it at, with at most pushForce.
+        btRigidBody& body = world_.dynamicBody(static_cast<std::size_t>(c.body));
+        const double missing = wishSpeed * into - dot(fromBt(body.getLinearVelocity()), dir);
+        const double impulse = std::min(tuning_.pushForce * dt, missing / body.getInvMass());
+        if (impulse <= 0) continue;
+        body.activate(true);
+        body.applyCentralImpulse(toBt(dir * impulse));
+    }
+}
+
+void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double dt) {
     const PlayerTuning& t = tuning_;
-    // View angles.
+    const PlayerCommand cmd = sanitized(rawCmd);
     s.yaw = static_cast<float>(std::remainder(static_cast<double>(s.yaw) + cmd.yawDelta, 2 * kPi));
     s.pitch = static_cast<float>(std::clamp(static_cast<double>(s.pitch) + cmd.pitchDelta, -kMaxPitch, kMaxPitch));
 
-    // Crouch now; stand up only where the head has room.
-    if (cmd.crouch && !s.crouching) {
+    // Crouch at once; stand up only where the standing capsule fits (sweep the crouched one up).
+    if (cmd.crouch) {
         s.crouching = true;
-    } else if (!cmd.crouch && s.crouching) {
-        const Vec3 c = s.feet + Vec3{0, t.crouchHeight / 2, 0};
-        if (!world_.sweep(crouchShape_, c, c + Vec3{0, t.standHeight - t.crouchHeight, 0})) s.crouching = false;
+    } else if (s.crouching) {
+        const Vec3 c = s.feet + kUp * (t.crouchHeight / 2);
+        if (!world_.sweep(crouchShape_, c, c + kUp * (t.standHeight - t.crouchHeight))) s.crouching = false;
     }
-    const double h = s.crouching ? t.crouchHeight : t.standHeight;
-    s.height = static_cast<float>(h);
+    const Body b = body(s.crouching);
+    s.height = static_cast<float>(b.height);
     s.eyeBelowTop = static_cast<float>(t.eyeBelowTop);
-    const btCylinderShape& shape = s.crouching ? crouchShape_ : standShape_;
-    Vec3 centre = s.feet + Vec3{0, h / 2, 0};
 
-    // On the ground unless rising from a jump; walking up a ramp keeps vertical speed at zero.
-    const auto ground = groundBelow(shape, centre, kGroundProbe);
-    bool onGround = ground && walkable(ground->normal) && s.velocity.y <= 0.5;
-    Vec3 groundNormal = onGround ? ground->normal : Vec3{0, 1, 0};
-    if (!onGround && s.airTicks <= kFollowGroundTicks && s.velocity.y <= 0) {
-        // Grounded last tick but the support just ended (a stair's edge): follow the ground down.
-        if (const auto below = groundBelow(shape, centre, t.stepHeight); below && walkable(below->normal)) {
-            centre.y -= std::max(0.0, below->fraction * t.stepHeight - kSkin);
-            onGround = true;
-            groundNormal = below->normal;
-        }
-    }
+    Move m;
+    m.centre = depenetrate(b, s.feet + kUp * (b.height / 2));
+    const Ground ground = findGround(b, m.centre, kGroundProbe);
+    bool onGround = ground.walkable && dot(s.velocity, ground.normal) <= kLeaveGroundSpeed;
 
-    // Wished motion on the horizontal plane.
+    // Wished motion: on the ground along its plane, in the air horizontal.
     const double sy = std::sin(static_cast<double>(s.yaw)), cy = std::cos(static_cast<double>(s.yaw));
     const Vec3 forward{-sy, 0, -cy}, right{cy, 0, -sy};
     Vec3 wish = forward * cmd.forward + right * cmd.right;
-    const double wishLen = length(wish);
-    if (wishLen > 1) wish = wish / wishLen;
-    const double speed = s.crouching ? t.crouchSpeed : (cmd.sprint ? t.sprintSpeed : t.walkSpeed);
-    const double wishSpeed = std::min(wishLen, 1.0) * speed;
-    const Vec3 wishDir = wishLen > 1e-9 ? wish / wishLen : Vec3{};
+    const double wishLen = std::min(length(wish), 1.0);
+    const Vec3 flatWishDir = normalize(wish);
+    const double maxSpeed = s.crouching ? t.crouchSpeed : t.walkSpeed * (cmd.sprint ? t.sprintMultiplier : 1.0);
+    const double wishSpeed = wishLen * maxSpeed;
 
     Vec3 vel = s.velocity;
     bool jumped = false;
     if (onGround) {
-        const double hs = length(horizontal(vel));
-        if (hs > 0) {
-            const double drop = std::max(hs, t.stopSpeed) * t.friction * dt;
-            const double scale = std::max(hs - drop, 0.0) / hs;
-            vel.x *= scale;
-            vel.z *= scale;
-        }
+        // Friction on the ground speed (Quake's PM_Friction): below stopSpeed it stops as if at stopSpeed.
+        const double speed = length(horizontal(vel));
+        if (speed > 1e-9) vel *= std::max(speed - std::max(speed, t.stopSpeed) * t.friction * dt, 0.0) / speed;
+        else vel = Vec3{};
+        const Vec3 wishDir = normalize(flatWishDir - ground.normal * dot(flatWishDir, ground.normal));
         accelerate(vel, wishDir, wishSpeed, t.groundAccel, dt);
-        // Run along the ground plane at full speed, up or down a ramp (Quake's PM_GroundMove).
-        vel.y = 0;
-        const double groundSpeed = length(vel);
-        vel = clipToPlane(vel, groundNormal);
-        if (length(vel) > 1e-9) vel = normalize(vel) * groundSpeed;
+        vel = alongPlane(vel, ground.normal);
         if (cmd.jump) {
-            vel.y = 0;
             vel.y = std::sqrt(2 * t.gravity * t.jumpHeight);
             onGround = false;
             jumped = true;
         }
     } else {
-        accelerate(vel, wishDir, wishSpeed, t.airAccel, dt);
-        vel.y = std::max(vel.y - t.gravity * dt, -t.maxFallSpeed);
+        accelerate(vel, flatWishDir, wishSpeed, t.airAccel, dt);
+    }
+    m.vel = m.moveVel = vel;
+    if (!onGround) {
+        // Gravity, moving with the tick's mean vertical speed: exact for constant acceleration, so
+        // jump heights and fall times do not depend on the tick rate.
+        m.vel.y = std::max(vel.y - t.gravity * dt, -t.maxFallSpeed);
+        m.moveVel.y = 0.5 * (vel.y + m.vel.y);
     }
 
-    const bool wasOnGround = onGround;
-    MoveResult moved = slideMove(shape, centre, vel, dt);
+    const Move start = m;
+    move(b, dt, onGround, m);
+    if (onGround && m.hitWall) stepUp(b, dt, start, m);
 
-    // Step up: if a wall stopped a walk, try the same move from stepHeight higher, then settle down.
-    if (wasOnGround && moved.blocked) {
-        Vec3 up = centre + Vec3{0, t.stepHeight, 0};
-        if (const auto ceiling = world_.sweep(shape, centre, up))
-            up = centre + Vec3{0, std::max(0.0, ceiling->fraction * t.stepHeight - kSkin), 0};
-        const MoveResult over = slideMove(shape, up, horizontal(vel), dt);
-        const double drop = over.centre.y - centre.y + kGroundProbe;
-        if (const auto land = groundBelow(shape, over.centre, drop); land && walkable(land->normal)) {
-            const Vec3 landed = over.centre - Vec3{0, std::max(0.0, land->fraction * drop - kSkin), 0};
-            if (length(horizontal(landed - centre)) > length(horizontal(moved.centre - centre)) + 1e-4) {
-                moved.centre = landed;
-                moved.velocity = Vec3{over.velocity.x, 0, over.velocity.z};
-            }
+    bool grounded = false;
+    if (onGround) {
+        // Follow the ground down stairs and ramps; past a ledge higher than a step, fall.
+        const Ground below = findGround(b, m.centre, t.stepHeight);
+        if (below.walkable) {
+            // Down to the skin above it; or back up to it once GJK noise in wall normals has pushed
+            // a player grinding along a wall below half of it (hysteresis: standing still is still).
+            if (below.distance > kSkin || below.distance < kSkin / 2) m.centre -= kUp * (below.distance - kSkin);
+            m.vel = alongPlane(m.vel, below.normal);  // over a ramp's crest: keep running, don't launch
+            grounded = true;
+        }
+    } else if (!jumped) {
+        // Landing.
+        const Ground below = findGround(b, m.centre, kGroundProbe);
+        if (below.walkable && dot(m.vel, below.normal) <= kLeaveGroundSpeed) {
+            m.centre -= kUp * std::max(0.0, below.distance - kSkin);
+            m.vel = clipToPlane(m.vel, below.normal);
+            grounded = true;
         }
     }
-
-    // Stay on the ground walking down stairs and ramps.
-    if (wasOnGround && !jumped) {
-        if (const auto below = groundBelow(shape, moved.centre, t.stepHeight); below && walkable(below->normal))
-            moved.centre.y -= std::max(0.0, below->fraction * t.stepHeight - kSkin);
-    }
-
-    centre = moved.centre;
-    vel = moved.velocity;
-    const auto after = groundBelow(shape, centre, kGroundProbe);
-    s.onGround = !jumped && after && walkable(after->normal) && (wasOnGround || vel.y <= 0.5);
-    // On the ground the vertical speed is the ground's business (ramps, stairs): keep it zero,
-    // so the next tick starts grounded; landing from a fall also ends here.
-    if (s.onGround) vel.y = 0;
-    s.airTicks = s.onGround ? 0 : s.airTicks + 1;
-    s.velocity = vel;
-    s.feet = centre - Vec3{0, h / 2, 0};
-
-    pushBodies(shape, centre, wish, dt);
+    s.onGround = grounded;
+    s.velocity = m.vel;
+    s.feet = m.centre - kUp * (b.height / 2);
+    pushBodies(m.contacts, flatWishDir, wishSpeed, dt);
 }
 
 }  // namespace obscura::sim

@@ -3,40 +3,29 @@
 
 #include "core/state_hash.h"
 
-#include <cstdlib>
+#include <cmath>
 
 namespace obscura::sim {
 
 namespace {
-// prop_crate defaults: a 0.75 m wooden crate of 20 kg.
-constexpr double kDefaultCrateSize = 0.75;
-constexpr double kDefaultCrateMass = 20;
+// 10..1000 Hz: below 10 a tick is a visible stutter and one tick's fall outruns the sub-step
+// cap; above 1000 the float sweeps resolve less than a tick's motion.
+constexpr double kMinTickRate = 10, kMaxTickRate = 1000;
 }  // namespace
 
 Simulation::Simulation(const map::Level& level, const SimConfig& config, const std::vector<TriangleMesh>& modelMeshes)
     : config_(config), rng_(config.seed) {
-    PlayerTuning tuning;
+    if (!(config.tickRate >= kMinTickRate && config.tickRate <= kMaxTickRate))
+        throw SimError("simulation: tick rate " + std::to_string(config.tickRate) + " Hz is outside 10..1000");
+    const PlayerTuning tuning;
     physics_ = std::make_unique<PhysicsWorld>(tuning.gravity);
-    for (const auto& b : level.brushes)
-        if (b.solid) physics_->addStaticHull(b.hullPoints);
+    physics_->addLevel(level);
     for (const auto& m : modelMeshes) physics_->addStaticTriangleMesh(m);
-    for (const auto& e : level.entities) {
-        if (e.classname != "prop_crate" || !e.hasOrigin) continue;
-        const std::string& sz = e.value("size");
-        const std::string& ms = e.value("mass");
-        const double size = sz.empty() ? kDefaultCrateSize : std::atof(sz.c_str());
-        const double mass = ms.empty() ? kDefaultCrateMass : std::atof(ms.c_str());
-        if (!(size > 0.05 && size < 10) || !(mass > 0 && mass < 10000)) continue;  // nonsense: skip the prop
-        const double h = size / 2;
-        // The entity origin marks the crate's base, so it starts resting on the floor.
-        physics_->addDynamicBox(e.origin + Vec3{0, h, 0}, {h, h, h}, mass, e.yaw);
-    }
     controller_ = std::make_unique<PlayerController>(*physics_, tuning);
-    player_.feet = config.overrideStart ? config.startFeet : level.hasPlayerStart ? level.playerStart : Vec3{};
-    player_.yaw = static_cast<float>(config.overrideStart ? config.startYaw : level.playerStartYaw);
-    player_.pitch = static_cast<float>(config.overrideStart ? config.startPitch : 0.0);
-    player_.height = static_cast<float>(tuning.standHeight);
-    player_.eyeBelowTop = static_cast<float>(tuning.eyeBelowTop);
+    if (config.overrideStart)
+        player_ = controller_->spawn(config.startFeet, config.startYaw, config.startPitch);
+    else
+        player_ = controller_->spawn(level.hasPlayerStart ? level.playerStart : Vec3{}, level.hasPlayerStart ? level.playerStartYaw : 0.0, 0.0);
 }
 
 void Simulation::step(const PlayerCommand& cmd) {
@@ -45,7 +34,7 @@ void Simulation::step(const PlayerCommand& cmd) {
     ++tick_;
 }
 
-std::vector<BodyPose> Simulation::bodyPoses() const {
+std::vector<Simulation::BodyPose> Simulation::bodyPoses() const {
     std::vector<BodyPose> out;
     for (std::size_t i = 0; i < physics_->dynamicBodyCount(); ++i) {
         const btTransform& t = physics_->dynamicBody(i).getWorldTransform();
@@ -64,14 +53,13 @@ std::uint64_t Simulation::stateHash() const {
     h.add(p.pitch);
     h.add(p.onGround);
     h.add(p.crouching);
-    h.add(static_cast<std::int32_t>(p.airTicks));
+    h.add(p.height);
     for (std::size_t i = 0; i < physics_->dynamicBodyCount(); ++i) {
         const btRigidBody& b = physics_->dynamicBody(i);
         const btTransform& t = b.getWorldTransform();
         const btQuaternion q = t.getRotation();
-        for (btScalar v : {t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z(), q.x(), q.y(), q.z(), q.w(),
-                           b.getLinearVelocity().x(), b.getLinearVelocity().y(), b.getLinearVelocity().z(),
-                           b.getAngularVelocity().x(), b.getAngularVelocity().y(), b.getAngularVelocity().z()})
+        const btVector3 &o = t.getOrigin(), &lv = b.getLinearVelocity(), &av = b.getAngularVelocity();
+        for (btScalar v : {o.x(), o.y(), o.z(), q.x(), q.y(), q.z(), q.w(), lv.x(), lv.y(), lv.z(), av.x(), av.y(), av.z()})
             h.add(static_cast<float>(v));
     }
     h.add(rng_.state());

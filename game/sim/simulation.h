@@ -16,25 +16,25 @@
 
 namespace obscura::sim {
 
-using obscura::TriangleMesh;
-
 struct SimConfig {
     double tickRate = 60;  // ticks per second
     std::uint64_t seed = 1;
     bool overrideStart = false;  // start at startFeet/startYaw/startPitch instead of the level's start
     Vec3 startFeet;
-    double startYaw = 0, startPitch = 0;
-};
-
-struct BodyPose {
-    Vec3 position;
-    double qx = 0, qy = 0, qz = 0, qw = 1;
-    Vec3 halfExtents;
+    double startYaw = 0, startPitch = 0;  // radians
 };
 
 class Simulation {
 public:
+    // A dynamic body's pose for rendering.
+    struct BodyPose {
+        Vec3 position;
+        double qx = 0, qy = 0, qz = 0, qw = 1;
+        Vec3 halfExtents;
+    };
+
     // modelMeshes: world-space triangles of the level's misc_models (static colliders).
+    // Throws SimError on a malformed level (naming file:line:column) or a bad tick rate.
     Simulation(const map::Level& level, const SimConfig& config, const std::vector<TriangleMesh>& modelMeshes = {});
 
     void step(const PlayerCommand& cmd);
@@ -44,6 +44,7 @@ public:
     const PlayerState& player() const { return player_; }
     Rng& rng() { return rng_; }
     PhysicsWorld& physics() { return *physics_; }
+    const PhysicsWorld& physics() const { return *physics_; }
     std::vector<BodyPose> bodyPoses() const;
 
     // Hash of everything that evolves: tick, player, every dynamic body, the RNG.

@@ -29,7 +29,7 @@ double walk(const map::Level& level, int ticks, sim::Simulation& s) {
 }
 }  // namespace
 
-TEST(LevelWalk, DefaultArena) {
+TEST(Simulation, WalksTheDefaultArena) {
     const auto path = std::filesystem::path(OBSCURA_SOURCE_DIR) / "media/levels/arena.map";
     const map::Level level = map::loadLevel(path.string());
     sim::Simulation s(level, {});
@@ -38,7 +38,7 @@ TEST(LevelWalk, DefaultArena) {
     EXPECT_GT(walk(level, 600, s), 10.0);
 }
 
-TEST(LevelWalk, LibreQuakeE3m4) {
+TEST(Simulation, WalksLibreQuakeE3m4) {
     const auto path = std::filesystem::path(OBSCURA_SHARED_DIR) / "maps/librequake/e3m4.map";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
     const map::Level level = map::loadLevel(path.string());

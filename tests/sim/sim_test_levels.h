@@ -1,11 +1,17 @@
-// Hand-built levels for the simulation tests: boxes and wedges as solid brushes (hull points only).
+// Hand-built levels for the simulation tests: boxes and wedges as solid brushes (hull points and
+// bounds only; physics needs no faces), plus small helpers to drive a Simulation.
 #pragma once
 
 #include "map/level.h"
+#include "sim/simulation.h"
 
 #include <cmath>
 
 namespace obscura::sim::testlevels {
+
+constexpr double kPi = 3.14159265358979323846;
+// The player's capsule radius (PlayerTuning's default), for "stops at the wall" checks.
+constexpr double kRadius = 0.35;
 
 inline map::LevelBrush box(Vec3 min, Vec3 max) {
     map::LevelBrush b;
@@ -13,6 +19,7 @@ inline map::LevelBrush box(Vec3 min, Vec3 max) {
         b.hullPoints.push_back({i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z});
     b.bounds.extend(min);
     b.bounds.extend(max);
+    b.solid = true;
     return b;
 }
 
@@ -29,12 +36,32 @@ inline map::LevelBrush ramp(double x0, double x1, double z0, double run, double 
 // A 40 x 40 m floor slab whose top is at y = 0, the player at the origin facing -Z.
 inline map::Level floorLevel() {
     map::Level l;
+    l.sourcePath = "test.map";
     l.entities.push_back({});
     l.entities[0].classname = "worldspawn";
     l.brushes.push_back(box({-20, -1, -20}, {20, 0, 20}));
     l.hasPlayerStart = true;
     l.playerStart = {0, 0, 0};
     return l;
+}
+
+inline map::LevelEntity crate(const Vec3& origin) {
+    map::LevelEntity e;
+    e.classname = "prop_crate";
+    e.hasOrigin = true;
+    e.origin = origin;
+    return e;
+}
+
+inline PlayerCommand walk(float forward = 1, float right = 0) {
+    PlayerCommand c;
+    c.forward = forward;
+    c.right = right;
+    return c;
+}
+
+inline void run(Simulation& s, const PlayerCommand& c, int ticks) {
+    for (int i = 0; i < ticks; ++i) s.step(c);
 }
 
 }  // namespace obscura::sim::testlevels
