@@ -17,6 +17,8 @@ PACKAGES=(
   xvfb xauth libgl1-mesa-dri
   # HUD font
   fonts-dejavu-core
+  # the level generator's self-check test (tools/levelgen, stdlib only)
+  python3
 )
 
 missing=()
