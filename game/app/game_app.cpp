@@ -571,22 +571,24 @@ void GameApp::writeRecording() {
     std::cout << "recorded " << settings_.record << "\n";
 }
 
+// One path for every key and mouse button: the input state, and the recording when there is one.
+void GameApp::onButton(const std::string& name, bool down) {
+    if (name.empty()) return;
+    if (down) input_.press(name);
+    else input_.release(name);
+    if (!recorder_) return;
+    const auto tick = static_cast<std::int64_t>(sim_->tick());
+    if (down) recorder_->keyDown(tick, name);
+    else recorder_->keyUp(tick, name);
+}
+
 bool GameApp::keyPressed(const OgreBites::KeyboardEvent& evt) {
-    if (evt.repeat) return true;
-    const std::string name = keyNameFromKeycode(evt.keysym.sym);
-    if (!name.empty()) {
-        input_.press(name);
-        if (recorder_) recorder_->keyDown(static_cast<std::int64_t>(sim_->tick()), name);
-    }
+    if (!evt.repeat) onButton(keyNameFromKeycode(evt.keysym.sym), true);
     return true;
 }
 
 bool GameApp::keyReleased(const OgreBites::KeyboardEvent& evt) {
-    const std::string name = keyNameFromKeycode(evt.keysym.sym);
-    if (!name.empty()) {
-        input_.release(name);
-        if (recorder_) recorder_->keyUp(static_cast<std::int64_t>(sim_->tick()), name);
-    }
+    onButton(keyNameFromKeycode(evt.keysym.sym), false);
     return true;
 }
 
@@ -599,20 +601,12 @@ bool GameApp::mouseMoved(const OgreBites::MouseMotionEvent& evt) {
 }
 
 bool GameApp::mousePressed(const OgreBites::MouseButtonEvent& evt) {
-    const std::string name = keyNameFromMouseButton(evt.button);
-    if (!name.empty()) {
-        input_.press(name);
-        if (recorder_) recorder_->keyDown(static_cast<std::int64_t>(sim_->tick()), name);
-    }
+    onButton(keyNameFromMouseButton(evt.button), true);
     return true;
 }
 
 bool GameApp::mouseReleased(const OgreBites::MouseButtonEvent& evt) {
-    const std::string name = keyNameFromMouseButton(evt.button);
-    if (!name.empty()) {
-        input_.release(name);
-        if (recorder_) recorder_->keyUp(static_cast<std::int64_t>(sim_->tick()), name);
-    }
+    onButton(keyNameFromMouseButton(evt.button), false);
     return true;
 }
 

@@ -56,6 +56,7 @@ private:
     int runLive();
     int runReplay(bool timed);
     void injectInput(const ReplayInput& in);
+    void onButton(const std::string& name, bool down);
     void applySetting(const std::string& key, const std::string& value, const std::string& where);
     void writeCapture(const std::string& name);
     void writeRecording();
