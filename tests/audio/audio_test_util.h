@@ -2,7 +2,9 @@
 
 #include <AL/alc.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,14 @@ inline double peakDb(const std::vector<float>& lr) {
     double p = 0;
     for (float v : lr) p = std::max(p, double(std::abs(v)));
     return toDb(p);
+}
+
+// "-23.9" or "-inf" (digital silence) for printing.
+inline std::string fmtDb(double db) {
+    if (db <= -998.0) return "-inf";
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f", db);
+    return b;
 }
 
 inline bool loopbackSupported() { return alcIsExtensionPresent(nullptr, "ALC_SOFT_loopback") == ALC_TRUE; }

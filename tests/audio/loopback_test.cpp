@@ -10,6 +10,7 @@
 using namespace obscura;
 using namespace obscura::audio;
 using audio_test::channelRmsDb;
+using audio_test::fmtDb;
 
 namespace {
 
@@ -23,11 +24,11 @@ struct Levels {
     double left, right, peak;
 };
 
-Levels renderShot(const Vec3& position) {
+Levels renderShot(const Vec3& position, const Vec3& listener = {0, 0, 0}, const Vec3& forward = {0, 0, -1}) {
     AudioSystem audio(AudioSettings{}, kRate);
     EXPECT_TRUE(audio.available()) << audio.deviceDescription();
     audio.loadSounds(audio_test::soundsDir());
-    audio.setListener({0, 0, 0}, {0, 0, -1}, {0, 1, 0});
+    audio.setListener(listener, forward, {0, 1, 0});
     EXPECT_NE(audio.play("rifle_shot", position), 0u);
     const std::vector<float> lr = audio.renderLoopback(kFrames);
     return {channelRmsDb(lr, 0), channelRmsDb(lr, 1), audio_test::peakDb(lr)};
@@ -38,8 +39,8 @@ Levels renderShot(const Vec3& position) {
 TEST(AudioLoopback, ShotToTheRightIsLouderOnTheRight) {
     if (!audio_test::loopbackSupported()) GTEST_SKIP() << "ALC_SOFT_loopback not available in this OpenAL";
     const Levels l = renderShot({3, 0, 0});
-    std::printf("[levels] rifle_shot 3 m right (+X), 0.5 s @ %d Hz: left %.1f dBFS RMS, right %.1f dBFS RMS, "
-                "peak %.1f dBFS, right-left %.1f dB\n", kRate, l.left, l.right, l.peak, l.right - l.left);
+    std::printf("[levels] rifle_shot 3 m right (+X), 0.5 s @ %d Hz: left %s dBFS RMS, right %s dBFS RMS, peak %s dBFS\n",
+                kRate, fmtDb(l.left).c_str(), fmtDb(l.right).c_str(), fmtDb(l.peak).c_str());
     EXPECT_GT(l.right, kAudibleDbfs);
     EXPECT_GE(l.right - l.left, kSideDifferenceDb);
     EXPECT_LE(l.peak, 0.0);
@@ -48,10 +49,25 @@ TEST(AudioLoopback, ShotToTheRightIsLouderOnTheRight) {
 TEST(AudioLoopback, ShotToTheLeftIsLouderOnTheLeft) {
     if (!audio_test::loopbackSupported()) GTEST_SKIP() << "ALC_SOFT_loopback not available in this OpenAL";
     const Levels l = renderShot({-3, 0, 0});
-    std::printf("[levels] rifle_shot 3 m left (-X), 0.5 s @ %d Hz: left %.1f dBFS RMS, right %.1f dBFS RMS, "
-                "peak %.1f dBFS, left-right %.1f dB\n", kRate, l.left, l.right, l.peak, l.left - l.right);
+    std::printf("[levels] rifle_shot 3 m left (-X), 0.5 s @ %d Hz: left %s dBFS RMS, right %s dBFS RMS, peak %s dBFS\n",
+                kRate, fmtDb(l.left).c_str(), fmtDb(l.right).c_str(), fmtDb(l.peak).c_str());
     EXPECT_GT(l.left, kAudibleDbfs);
     EXPECT_GE(l.left - l.right, kSideDifferenceDb);
+}
+
+TEST(AudioLoopback, ListenerPoseIsHonoured) {
+    if (!audio_test::loopbackSupported()) GTEST_SKIP() << "ALC_SOFT_loopback not available in this OpenAL";
+    // Turned around (facing +Z): a source at +X is now on the listener's left.
+    const Levels turned = renderShot({3, 0, 0}, {0, 0, 0}, {0, 0, 1});
+    EXPECT_GE(turned.left - turned.right, kSideDifferenceDb);
+    // Listener moved to x = 10 facing -Z: a source at x = 7 is on its left.
+    const Levels moved = renderShot({7, 0, 0}, {10, 0, 0});
+    EXPECT_GE(moved.left - moved.right, kSideDifferenceDb);
+    // Straight ahead: both channels equal.
+    const Levels ahead = renderShot({0, 0, -3});
+    std::printf("[levels] rifle_shot 3 m ahead: left %s dBFS RMS, right %s dBFS RMS\n", fmtDb(ahead.left).c_str(),
+                fmtDb(ahead.right).c_str());
+    EXPECT_NEAR(ahead.left, ahead.right, 0.5);
 }
 
 TEST(AudioLoopback, SilenceWhenNothingPlays) {
@@ -60,7 +76,8 @@ TEST(AudioLoopback, SilenceWhenNothingPlays) {
     ASSERT_TRUE(audio.available());
     audio.loadSounds(audio_test::soundsDir());
     const std::vector<float> lr = audio.renderLoopback(kFrames);
-    std::printf("[levels] nothing playing: left %.1f dBFS, right %.1f dBFS\n", channelRmsDb(lr, 0), channelRmsDb(lr, 1));
+    std::printf("[levels] nothing playing: left %s dBFS, right %s dBFS\n", fmtDb(channelRmsDb(lr, 0)).c_str(),
+                fmtDb(channelRmsDb(lr, 1)).c_str());
     EXPECT_LT(channelRmsDb(lr, 0), kSilentDbfs);
     EXPECT_LT(channelRmsDb(lr, 1), kSilentDbfs);
 }
