@@ -122,10 +122,13 @@ void mixInto(Sig& dst, const Sig& src, double gain, double startSeconds = 0) {
     }
 }
 
-// Final touch for one-shots: peak to `peakDb` dBFS and a 4 ms fade at the end (no click at cut-off).
+// Final touch for one-shots: a half-cosine fade over the last 15 % (at least 4 ms), so a ringing
+// tail dies away instead of being cut (no click at the buffer end), then peak to `peakDb` dBFS.
 Sig finish(Sig s, double peakDb) {
-    const int fade = std::min(samplesFor(0.004), static_cast<int>(s.size()));
-    for (int i = 0; i < fade; ++i) s[s.size() - 1 - static_cast<std::size_t>(i)] *= static_cast<double>(i) / fade;
+    const int n = static_cast<int>(s.size());
+    const int fade = std::min(std::max(samplesFor(0.004), n * 15 / 100), n);
+    for (int i = 0; i < fade; ++i)
+        s[static_cast<std::size_t>(n - 1 - i)] *= 0.5 - 0.5 * std::cos(kPi * static_cast<double>(i) / fade);
     normalizePeak(s, dbToGain(peakDb));
     return s;
 }

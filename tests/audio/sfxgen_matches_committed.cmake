@@ -1,0 +1,21 @@
+# Runs the real obscura_sfxgen into a scratch folder and byte-compares every WAV it writes with
+# media/sounds (cmake -P; TOOL, SOURCE_DIR, WORK_DIR given with -D).
+file(REMOVE_RECURSE "${WORK_DIR}")
+execute_process(COMMAND "${TOOL}" "${WORK_DIR}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "obscura_sfxgen failed (${rc}): ${err}")
+endif()
+message(STATUS "${out}")
+file(GLOB fresh RELATIVE "${WORK_DIR}" "${WORK_DIR}/*.wav")
+list(LENGTH fresh count)
+if(count LESS 16)
+  message(FATAL_ERROR "obscura_sfxgen wrote only ${count} WAVs")
+endif()
+foreach(f IN LISTS fresh)
+  execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${WORK_DIR}/${f}" "${SOURCE_DIR}/media/sounds/${f}"
+                  RESULT_VARIABLE diff)
+  if(NOT diff EQUAL 0)
+    message(FATAL_ERROR "media/sounds/${f} is stale or missing: run `obscura_sfxgen media/sounds` and commit")
+  endif()
+endforeach()
+file(REMOVE_RECURSE "${WORK_DIR}")
