@@ -1,0 +1,73 @@
+// Knobs of the smoke solver. Every tuned constant carries the reason for its value.
+#pragma once
+
+#include "core/vec3.h"
+
+namespace obscura::smoke {
+
+enum class PressureSolver {
+    Jacobi,               // two buffers, p' = (sum of neighbours + rhs) / n
+    RedBlackGaussSeidel,  // in place, red cells then black: about twice Jacobi's convergence per
+                          // iteration at the same memory traffic (measured: see README.md)
+};
+
+struct SmokeSettings {
+    // Grid. 64^3 x 0.25 m = a 16 m box centred on the detonation point: room-sized smoke with
+    // 25 cm detail (the renderer adds sub-grid noise). Clamped to [16, 128] with a warning.
+    int resolution = 64;
+    double cellSize = 0.25;
+
+    // Pressure projection. 20 red-black Gauss-Seidel iterations, warm-started from the previous
+    // step's pressure: measured to leave a residual divergence below ~2 % of the pre-projection
+    // one after the first second (README.md); more buys little visible difference.
+    int pressureIterations = 20;
+    PressureSolver pressureSolver = PressureSolver::RedBlackGaussSeidel;
+
+    int threads = 0;  // 0: hardware concurrency. Results are bitwise identical for any count.
+
+    // Lifetime (CS-style smoke grenade): emit for 3 s, hold, fade over the last 4 s, gone at 18 s.
+    double lifetime = 18.0;
+    double emitTime = 3.0;
+    double fadeTime = 4.0;  // the density dissipation ramps up over this long before `lifetime`
+
+    // Emitter: a sphere at the detonation point (lifted by emitterLift so a grenade lying on the
+    // floor does not sit half in it).
+    double emitterRadius = 0.5;      // metres: the canister's plume at 2 cells wide
+    double emitterLift = 0.3;        // metres above the detonation point
+    double emitDensity = 6.0;        // density units per second inside the sphere (1 = opaque-ish)
+    double emitTemperature = 8.0;    // kelvin above ambient: enough lift for a rising, rolling top
+    double emitExpansion = 1.5;      // 1/s volume source in the sphere: the canister pushes gas out,
+                                     // which spreads the cloud along the floor like the real thing
+    Vec3 emitVelocity{0, 0, 0};      // m/s added inside the sphere each step (e.g. a jet direction)
+
+    // Forces. buoyancy (Fedkiw et al. 2001): a = (buoyancy * T - densityWeight * density) up.
+    double buoyancy = 0.35;          // m/s^2 per kelvin: hot smoke rises ~1 m/s within a second
+    double densityWeight = 0.08;     // m/s^2 per density unit: cooled smoke settles slowly
+    double vorticity = 0.35;         // confinement epsilon (dimensionless, x cell size): keeps
+                                     // billows alive at 25 cm cells without visible noise
+    double maxSpeed = 20.0;          // m/s velocity clamp: a guard against blow-ups, never reached
+                                     // in normal play (the emitter pushes ~1-2 m/s)
+
+    // Dissipation, per second (exponential).
+    double densityDissipation = 0.02;     // smoke thins slowly while the grenade lasts
+    double temperatureDissipation = 0.6;  // the plume cools within a couple of seconds, then settles
+    double velocityDissipation = 0.15;    // stops the cloud drifting forever in a closed room
+    double fadeDissipation = 2.5;         // extra density decay at the end of the fade: ramped over
+                                          // fadeTime it leaves ~1 % (e^-5) at `lifetime`
+
+    // Advection safety: a step is split so no trace goes further than maxCfl cells; each trace
+    // is in any case clamped to one cell per axis, which is what keeps smoke from crossing a
+    // one-cell wall (see README.md).
+    double maxCfl = 1.0;
+    int maxSubsteps = 4;
+    double maxStep = 0.1;  // seconds: longer dt values are clamped (a hitch should not explode it)
+
+    // Grid border cells that are inside the level: open (smoke flows out and is gone) or solid.
+    bool openBorder = true;
+
+    // Self-shadowing: transmittance = exp(-shadowSigma * integral of density along the light ray).
+    double shadowSigma = 4.0;  // per metre per density unit: density 1 over 25 cm passes e^-1
+    double exportDensityScale = 1.0;  // density mapped to 1.0 (255) in the packed texture
+};
+
+}  // namespace obscura::smoke

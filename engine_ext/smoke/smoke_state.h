@@ -1,0 +1,81 @@
+// The smoke solver's state (fields, cell classes, scratch) and the two stepping paths that update
+// it: the optimised multithreaded one and the scalar reference. Internal to engine_ext/smoke and
+// its tests; the game uses smoke_volume.h.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+#include "smoke/smoke_grid.h"
+#include "smoke/smoke_kernels.h"
+#include "smoke/smoke_settings.h"
+
+namespace obscura::smoke {
+
+class ThreadPool;
+
+// What the last step did (the last substep's figures where it was split).
+struct SmokeStats {
+    int substeps = 0;
+    int pressureIterations = 0;
+    double divergenceBefore = 0;  // max |div u| over fluid cells before the projection (1/s)
+    double residual = 0;          // max |div u - source| left after it (1/s)
+    double maxSpeed = 0;          // m/s, max |face velocity| after the step
+    double milliseconds = 0;      // wall time of the whole step() call
+};
+
+struct DynamicCell {
+    std::size_t index;
+    float vx, vy, vz;  // the obstacle's velocity (m/s)
+};
+
+struct SmokeState {
+    GridInfo grid;
+    kernels::Dims dims{};
+    std::vector<std::uint8_t> voxelSolid;   // the voxeliser's verdict (brushes, meshes, out of bounds)
+    std::vector<std::uint8_t> staticClass;  // CellClass: voxels + sealed-off fluid + the ghost layer
+    std::vector<std::uint8_t> cellClass;    // staticClass + moving obstacles: what the solver uses
+    std::vector<std::uint8_t> faceMask[3];  // 1: face between c - stride and c is between a fluid cell
+                                            // and a non-solid one (projected); 0: boundary (set)
+    std::vector<float> diagInv;             // 1 / non-solid neighbours for fluid cells, 0 elsewhere
+    std::vector<float> source;              // volume source (1/s) per cell: the emitter's expansion
+    std::vector<DynamicCell> dynamicCells;  // cells covered by moving obstacles this step
+
+    // Fields (see smoke_kernels.h for the staggering).
+    std::vector<float> density, temperature, u, v, w, pressure;
+    // Scratch.
+    std::vector<float> hat[5], next[5], omega[4], rhs, pressureTmp;
+    std::vector<float> planeA, planeB;  // per z-plane reduction partials (fixed order)
+
+    Vec3 centre;           // detonation point
+    Vec3 emitterCentre;
+    bool regionOpen = false;  // the centre's fluid region reaches an open border cell
+    std::size_t fluidCells = 0, emitterCells = 0;
+    double age = 0;
+    SmokeStats stats;
+
+    float* field(int n) {  // 0 density, 1 temperature, 2 u, 3 v, 4 w
+        std::vector<float>* f[5] = {&density, &temperature, &u, &v, &w};
+        return f[n]->data();
+    }
+};
+
+// Builds classes, masks, diagInv and the emitter source from voxelSolid (creation time).
+void initialiseState(SmokeState& s, const SmokeSettings& settings);
+// Recomputes cellClass, faceMask and diagInv for z-planes [k0, k1] from staticClass + dynamicCells.
+void rebuildDerived(SmokeState& s, int k0, int k1);
+
+// One solver substep of dt seconds (emitter, advection, forces, projection, dissipation).
+// The fast path uses `pool`; the reference path is single-threaded with plain loops.
+void substepFast(SmokeState& s, const SmokeSettings& settings, ThreadPool& pool, float dt);
+void substepReference(SmokeState& s, const SmokeSettings& settings, float dt);
+
+// Shared small pieces used by both paths.
+void applyEmitter(SmokeState& s, const SmokeSettings& settings, float dt);
+void patchDynamicFaces(SmokeState& s);
+void setBorderFaces(SmokeState& s);
+float densityDecay(const SmokeState& s, const SmokeSettings& settings, float dt);
+
+}  // namespace obscura::smoke

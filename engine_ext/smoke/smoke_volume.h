@@ -1,0 +1,120 @@
+// SmokeVolume: one smoke grenade's cloud, simulated on its own grid (default 64^3 cells of 0.25 m,
+// a 16 m box centred on the detonation point) against the level's brushes and meshes.
+// Plain C++ (no OGRE): the renderer uploads exportRG8() / exportRGFloat() into a 3D texture and
+// ray-marches it; the game steps it, feeds it moving obstacles and bullet rays (carve).
+//
+// Typical use:
+//   auto vol = SmokeVolume::create(level, meshes, impactPoint);          // throws on bad input
+//   each frame: vol.setMovingObstacles(players); vol.step(dt);
+//               vol.computeTransmittance(towardSun); vol.exportRG8(buffer);  // upload buffer
+//   on a shot:  vol.carve(muzzle, direction, range, 0.3);
+//   when vol.finished(): drop it (SmokeManager does this).
+//
+// Determinism: step() gives bitwise identical fields for any thread count (SmokeSettings::threads).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/triangle_mesh.h"
+#include "core/vec3.h"
+#include "map/level.h"
+#include "smoke/smoke_grid.h"
+#include "smoke/smoke_settings.h"
+#include "smoke/smoke_state.h"
+
+namespace obscura::smoke {
+
+class ThreadPool;
+
+// Something that moves through the smoke and pushes it (players, grenades, props). Its cells are
+// solid for one step and their faces move at `velocity` (free-slip against it).
+struct MovingObstacle {
+    enum class Shape { Sphere, Box };
+    Shape shape = Shape::Sphere;
+    Vec3 centre;
+    double radius = 0.4;               // sphere, metres
+    Vec3 halfExtents{0.3, 0.9, 0.3};   // box (axis-aligned), metres
+    Vec3 velocity;                     // m/s
+};
+
+class SmokeVolume {
+public:
+    // Builds the grid around `centre` and voxelises the level's solid brushes and `meshes` into
+    // it. Throws std::runtime_error with a readable message when the level has no brushes, the
+    // centre is not finite, is outside the level's bounds or inside a solid, or cellSize is not
+    // positive. A resolution outside [16, 128] is clamped with a warning on stderr.
+    // `pool`: share one thread pool between volumes (SmokeManager does); null = own pool of
+    // settings.threads threads.
+    static SmokeVolume create(const map::Level& level, const std::vector<TriangleMesh>& meshes, const Vec3& centre,
+                              const SmokeSettings& settings = {}, std::shared_ptr<ThreadPool> pool = nullptr);
+
+    SmokeVolume(SmokeVolume&&) noexcept;
+    SmokeVolume& operator=(SmokeVolume&&) noexcept;
+    ~SmokeVolume();
+
+    // Advances by dt seconds (clamped to settings.maxStep; non-finite or <= 0 does nothing; split
+    // into substeps when the flow is faster than maxCfl cells per step). Never throws.
+    void step(double dt);
+    // The same step through the scalar single-threaded reference solver (tests, benchmark).
+    void stepReference(double dt);
+
+    // Replaces the moving obstacles (takes effect from the next step). Smoke inside a newly
+    // covered cell is pushed to its free neighbours.
+    void setMovingObstacles(const std::vector<MovingObstacle>& obstacles);
+
+    // A bullet: removes smoke within `radius` of the segment origin + t * direction, t in
+    // [0, length] (smoothly: full removal on the axis, none at the radius) and gives the air a
+    // wake along the ray (wakeSpeed m/s on the axis) so the tunnel closes by the flow.
+    void carve(const Vec3& origin, const Vec3& direction, double length, double radius, double wakeSpeed = 3.0);
+
+    double age() const;        // seconds simulated
+    bool emitting() const;     // age < emitTime
+    bool finished() const;     // age >= lifetime: drop it
+    const GridInfo& grid() const;
+    const SmokeSettings& settings() const;
+    const SmokeStats& stats() const;  // of the last step
+    Vec3 centre() const;
+    int threads() const;
+
+    // Density at a world point (trilinear; 0 outside the grid). For gameplay (line of sight, AI).
+    double sampleDensity(const Vec3& world) const;
+    // Optical depth of the smoke along a segment (sum of density x step), for line-of-sight tests.
+    double opticalDepth(const Vec3& from, const Vec3& to) const;
+
+    float densityAt(int i, int j, int k) const;
+    bool solidAt(int i, int j, int k) const;       // the solver treats the cell as solid (any cause)
+    bool voxelSolidAt(int i, int j, int k) const;  // the voxeliser marked it (brush / mesh / out of level)
+    double totalDensity() const;   // sum of density x cell volume (m^3 density units), fixed order
+    double maxDivergence() const;  // max |div u - source| over fluid cells now (1/s)
+
+    // Transmittance toward a light: per cell exp(-shadowSigma * integral of density from the cell
+    // toward the light), swept slice by slice along the light's dominant axis (bilinear in the
+    // slice before). `towardLight` points from the smoke to the light.
+    void computeTransmittance(const Vec3& towardLight);
+    const std::vector<float>& transmittance() const;  // grid().cells() values, x fastest; 1 until computed
+
+    // Packed for a 3D texture of grid().nx x ny x nz (x fastest, then y, then z):
+    // RG8: R = density / exportDensityScale (clamped to 1), G = transmittance, each 0..255.
+    void exportRG8(std::vector<std::uint8_t>& out) const;
+    // RG32F: (density, transmittance) pairs, unscaled.
+    void exportRGFloat(std::vector<float>& out) const;
+
+    // True when every field is finite, density and temperature are >= 0 and no non-fluid cell
+    // holds density; otherwise false and `problem` says what and where.
+    bool validate(std::string* problem = nullptr) const;
+
+    // The raw state, for tests and the benchmark.
+    const SmokeState& state() const;
+    SmokeState& mutableState();
+
+private:
+    struct Impl;
+    explicit SmokeVolume(std::unique_ptr<Impl> impl);
+    void advance(double dt, bool reference);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace obscura::smoke

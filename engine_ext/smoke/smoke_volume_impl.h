@@ -1,0 +1,19 @@
+// SmokeVolume's private data (shared by smoke_volume.cpp and smoke_volume_query.cpp).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "smoke/smoke_volume.h"
+#include "smoke/thread_pool.h"
+
+namespace obscura::smoke {
+
+struct SmokeVolume::Impl {
+    SmokeSettings settings;
+    SmokeState state;
+    std::shared_ptr<ThreadPool> pool;
+    std::vector<float> transmittance;  // 1 until computeTransmittance()
+};
+
+}  // namespace obscura::smoke
