@@ -7,6 +7,7 @@
 #include <AL/alext.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -289,8 +290,11 @@ void AudioSystem::loadSounds(const std::string& directory) {
     std::error_code ec;
     if (!fs::is_directory(directory, ec)) throw std::runtime_error(directory + ": not a directory");
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(directory))
-        if (entry.is_regular_file() && entry.path().extension() == ".wav") files.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(directory)) {
+        std::string ext = entry.path().extension().string();
+        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (entry.is_regular_file() && ext == ".wav") files.push_back(entry.path());
+    }
     std::sort(files.begin(), files.end());
     m.makeCurrent();
     for (const fs::path& file : files) {
@@ -359,6 +363,15 @@ void AudioSystem::setSourcePosition(SoundHandle handle, const Vec3& position) {
     v->position = position;
     alSource3f(v->source, AL_POSITION, static_cast<float>(position.x), static_cast<float>(position.y),
                static_cast<float>(position.z));
+}
+
+void AudioSystem::setSourceGain(SoundHandle handle, float gain) {
+    Impl& m = *impl_;
+    Impl::Voice* v = m.lookup(handle);
+    if (!v) return;
+    m.makeCurrent();
+    v->gain = clampGain(gain);
+    alSourcef(v->source, AL_GAIN, m.effectiveGain(*v));
 }
 
 void AudioSystem::stop(SoundHandle handle) {

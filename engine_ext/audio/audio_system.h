@@ -43,7 +43,7 @@ public:
     bool isLoopback() const;
     const std::string& deviceDescription() const;  // the opened device's name, or why none
 
-    // Loads every *.wav in `directory` once (name = file stem). Throws std::runtime_error naming the
+    // Loads every *.wav (any case) in `directory` once (name = file stem). Throws std::runtime_error naming the
     // file and the problem for a malformed WAV. WAVs are parsed even when silent, so a broken file
     // is reported the same way on machines without a sound card. Stereo files are mixed to mono
     // (3D sources must be mono to be spatialised).
@@ -61,6 +61,7 @@ public:
     // Listener-relative, unattenuated (UI clicks); scaled by the master volume only.
     SoundHandle playUi(const std::string& name, float gain = 1.0f);
     void setSourcePosition(SoundHandle handle, const Vec3& position);
+    void setSourceGain(SoundHandle handle, float gain);  // e.g. fade a loop out; volumes still apply
     void stop(SoundHandle handle);
     bool isPlaying(SoundHandle handle) const;  // false for 0/stale handles
 

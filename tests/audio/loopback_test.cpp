@@ -99,6 +99,15 @@ TEST(AudioLoopback, DistanceAttenuationAndVolumes) {
     EXPECT_NEAR(near - far, 20.0 * std::log10(50.0 / 2.0), 1.5);  // inverse distance, ref 2 m, rolloff 1
     const double halfEffects = level({0, 0, -2}, 1, 0.5f, false);
     EXPECT_NEAR(near - halfEffects, 6.0, 0.5);
+    {  // setSourceGain: a loop faded to half is 6 dB down.
+        AudioSystem audio(AudioSettings{}, kRate);
+        audio.loadSounds(audio_test::soundsDir());
+        const SoundHandle h = audio.play("smoke_hiss", {0, 0, -2}, 1.0f, 1.0f, true);
+        const std::vector<float> full = audio.renderLoopback(kRate / 4);
+        audio.setSourceGain(h, 0.5f);
+        const std::vector<float> half = audio.renderLoopback(kRate / 4);
+        EXPECT_NEAR(channelRmsDb(full, 0) - channelRmsDb(half, 0), 6.0, 0.7);
+    }
     const double uiHalfEffects = level({}, 1, 0.5f, true);
     const double uiHalfMaster = level({}, 0.5f, 1, true);
     EXPECT_NEAR(uiHalfEffects - uiHalfMaster, 6.0, 0.5) << "UI sounds follow the master volume only";
