@@ -6,8 +6,11 @@
 #include <AL/alc.h>
 #include <AL/alext.h>
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -22,6 +25,36 @@ namespace {
 constexpr std::uint32_t kIndexBits = 12;  // up to 4095 sources
 constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1u;
 constexpr int kMaxPool = static_cast<int>(kIndexMask);
+
+// Keeping the "one warning line" promise on a machine without a sound card: probing the default
+// device makes libasound print ~9 "ALSA lib ..." lines and OpenAL Soft one "AL lib: (EE)" line. Unless
+// the user asked for OpenAL Soft's diagnostics (ALSOFT_LOGLEVEL set), we lower OpenAL Soft's log level
+// (read once, at its initialisation) and mute libasound's error printer while the device is opened.
+// libasound is the very library OpenAL Soft dlopen()s, so its handler is shared; it is restored after.
+using AlsaErrorHandler = void (*)(const char*, int, const char*, int, const char*, ...);
+using AlsaSetErrorHandler = int (*)(AlsaErrorHandler);
+void silentAlsaError(const char*, int, const char*, int, const char*, ...) {}
+
+class QuietDeviceProbe {
+public:
+    QuietDeviceProbe() {
+        if (std::getenv("ALSOFT_LOGLEVEL")) return;  // the user wants the diagnostics
+        ::setenv("ALSOFT_LOGLEVEL", "0", 0);
+        lib_ = ::dlopen("libasound.so.2", RTLD_LAZY | RTLD_LOCAL);
+        if (lib_) set_ = reinterpret_cast<AlsaSetErrorHandler>(::dlsym(lib_, "snd_lib_error_set_handler"));
+        if (set_) set_(silentAlsaError);
+    }
+    ~QuietDeviceProbe() {
+        if (set_) set_(nullptr);  // back to libasound's default printer
+        if (lib_) ::dlclose(lib_);
+    }
+    QuietDeviceProbe(const QuietDeviceProbe&) = delete;
+    QuietDeviceProbe& operator=(const QuietDeviceProbe&) = delete;
+
+private:
+    void* lib_ = nullptr;
+    AlsaSetErrorHandler set_ = nullptr;
+};
 
 float clampGain(float g) { return std::isfinite(g) ? std::max(0.0f, g) : 0.0f; }
 
@@ -222,7 +255,10 @@ AudioSystem::AudioSystem(const AudioSettings& settings, int loopbackSampleRate) 
                    ALC_FREQUENCY, loopbackSampleRate};
         m.description = "loopback " + std::to_string(loopbackSampleRate) + " Hz stereo";
     } else {
-        m.device = alcOpenDevice(name);
+        {
+            QuietDeviceProbe quiet;
+            m.device = alcOpenDevice(name);
+        }
         if (!m.device) {
             m.goSilent("cannot open " + shownName);
             return;

@@ -75,6 +75,27 @@ TEST(AudioNoDevice, NoBackendRunsSilent) {
     }, "audio: no output device \\(cannot open default device\\); running silent(.|\n)*child: ok");
 }
 
+TEST(AudioNoDevice, DefaultAlsaDeviceWarnsWithOneLine) {
+    // The headless case the game meets in CI: OpenAL Soft's ALSA backend, no card. libasound and
+    // OpenAL Soft would print ~10 lines of their own; AudioSystem keeps it to its one warning line.
+    EXPECT_IN_FRESH_PROCESS("alsa", [] {
+        ::unsetenv("ALSOFT_LOGLEVEL");
+        testing::internal::CaptureStderr();
+        std::string problem;
+        {
+            AudioSystem audio(AudioSettings{});
+            if (!audio.available()) problem = silentButHarmless(audio);
+        }
+        const std::string err = testing::internal::GetCapturedStderr();
+        std::fprintf(stderr, "captured: [%s]\n", err.c_str());
+        const auto lines = std::count(err.begin(), err.end(), '\n');
+        if (err.empty()) return problem;  // a real ALSA device opened: nothing to say
+        if (lines != 1 || err.rfind("audio: no output device (", 0) != 0)
+            problem += "expected exactly one 'audio: no output device' line; ";
+        return problem;
+    }, "child: ok");
+}
+
 TEST(AudioNoDevice, NullBackendPlaysWithoutSoundCard) {
     // ALSOFT_DRIVERS=null: OpenAL Soft's null backend mixes into nothing; the game runs "with audio".
     EXPECT_IN_FRESH_PROCESS("null", [] {
