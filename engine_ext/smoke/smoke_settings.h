@@ -55,6 +55,12 @@ struct SmokeSettings {
     double fadeDissipation = 2.5;         // extra density decay at the end of the fade: ramped over
                                           // fadeTime it leaves ~1 % (e^-5) at `lifetime`
 
+    // MacCormack advection is not conservative (Selle et al. trade that for sharpness): near walls
+    // and in converging flow it gains or loses several % per second. On: after each advection the
+    // density is scaled so its total equals the total before, minus what left through open
+    // border faces, times the dissipation (a global factor, invisible; README.md has figures).
+    bool conserveMass = true;
+
     // Advection safety: a step is split so no trace goes further than maxCfl cells; each trace
     // is in any case clamped to one cell per axis, which is what keeps smoke from crossing a
     // one-cell wall (see README.md).

@@ -22,7 +22,7 @@ void forPlanes(ThreadPool& pool, int k0, int k1, const Fn& fn) {  // planes [k0,
     });
 }
 
-void advect(SmokeState& s, ThreadPool& pool, float dt, float decayD, float decayT, float decayV) {
+void advect(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt, float decayD, float decayT, float decayV) {
     const Dims d = s.dims;
     const float scale = dt / static_cast<float>(s.grid.cellSize);
     const float* F[5] = {s.density.data(), s.temperature.data(), s.u.data(), s.v.data(), s.w.data()};
@@ -31,8 +31,10 @@ void advect(SmokeState& s, ThreadPool& pool, float dt, float decayD, float decay
     const float *u = F[2], *v = F[3], *w = F[4];
     const std::uint8_t* cls = s.cellClass.data();
 
-    // Pass 1: semi-Lagrangian forward step of all five fields.
+    const double outflow = st.conserveMass ? borderOutflow(s, dt) : 0.0;
+    // Pass 1: semi-Lagrangian forward step of all five fields (+ this plane's density total).
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
+        s.planeSum[static_cast<std::size_t>(k)] = planeDensity(s.density, d, k);
         for (int j = 1; j < d.ny - 1; ++j) {
             const std::ptrdiff_t row = d.sy * j + d.sz * k;
             for (int i = 1; i < d.nx - 1; ++i) {
@@ -61,7 +63,17 @@ void advect(SmokeState& s, ThreadPool& pool, float dt, float decayD, float decay
                 N[4][c] = kernels::advectCorrect(F[4], H[4], d, c, i, j, k, kernels::dispAtW(u, v, w, c, d, scale)) * decayV;
             }
         }
+        s.planeSumAfter[static_cast<std::size_t>(k)] = planeDensity(s.next[0], d, k);
     });
+    double before = 0, after = 0;
+    for (int k = 1; k < d.nz - 1; ++k) before += s.planeSum[static_cast<std::size_t>(k)];
+    for (int k = 1; k < d.nz - 1; ++k) after += s.planeSumAfter[static_cast<std::size_t>(k)];
+    const float massFactor = massScale(st, before, outflow, after, decayD);
+    if (massFactor != 1.f)
+        forPlanes(pool, 1, d.nz - 1, [&](int k) {
+            float* row = N[0] + d.sz * k;
+            for (std::ptrdiff_t c = d.sy; c < d.sz - d.sy; ++c) row[c] *= massFactor;
+        });
     std::swap(s.density, s.next[0]);
     std::swap(s.temperature, s.next[1]);
     std::swap(s.u, s.next[2]);
@@ -211,7 +223,7 @@ void substepFast(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float
     const float decayD = densityDecay(s, st, dt);
     const float decayT = static_cast<float>(std::exp(-st.temperatureDissipation * dt));
     const float decayV = static_cast<float>(std::exp(-st.velocityDissipation * dt));
-    advect(s, pool, dt, decayD, decayT, decayV);
+    advect(s, st, pool, dt, decayD, decayT, decayV);
     setBorderFaces(s);  // the curl reads the border faces: give them this step's values
     forces(s, st, pool, dt);
     setBorderFaces(s);

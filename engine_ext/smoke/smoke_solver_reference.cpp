@@ -25,7 +25,7 @@ bool faceOpen(const SmokeState& s, std::ptrdiff_t behind, std::ptrdiff_t c) {
     return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
 }
 
-void advectReference(SmokeState& s, float dt, float decayD, float decayT, float decayV) {
+void advectReference(SmokeState& s, const SmokeSettings& st, float dt, float decayD, float decayT, float decayV) {
     const Dims d = s.dims;
     const float scale = dt / static_cast<float>(s.grid.cellSize);
     const std::vector<float> u0 = s.u, v0 = s.v, w0 = s.w;  // the velocity every trace uses
@@ -58,7 +58,14 @@ void advectReference(SmokeState& s, float dt, float decayD, float decayT, float 
         }
         field = std::move(out);
     };
+    const double outflow = st.conserveMass ? borderOutflow(s, dt) : 0.0;
+    double before = 0, after = 0;
+    for (int k = 1; k < d.nz - 1; ++k) before += planeDensity(s.density, d, k);
     advectField(s.density, Cell, decayD, true);
+    for (int k = 1; k < d.nz - 1; ++k) after += planeDensity(s.density, d, k);
+    const float massFactor = massScale(st, before, outflow, after, decayD);
+    if (massFactor != 1.f)
+        forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) { s.density[static_cast<std::size_t>(c)] *= massFactor; });
     advectField(s.temperature, Cell, decayT, true);
     advectField(s.u, UFace, decayV, false);
     advectField(s.v, VFace, decayV, false);
@@ -206,7 +213,7 @@ void substepReference(SmokeState& s, const SmokeSettings& st, float dt) {
     const float decayD = densityDecay(s, st, dt);
     const float decayT = static_cast<float>(std::exp(-st.temperatureDissipation * dt));
     const float decayV = static_cast<float>(std::exp(-st.velocityDissipation * dt));
-    advectReference(s, dt, decayD, decayT, decayV);
+    advectReference(s, st, dt, decayD, decayT, decayV);
     setBorderFaces(s);  // the curl reads the border faces: give them this step's values
     forcesReference(s, st, dt);
     setBorderFaces(s);

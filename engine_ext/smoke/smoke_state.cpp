@@ -81,6 +81,8 @@ void initialiseState(SmokeState& s, const SmokeSettings& st) {
     for (auto& m : s.faceMask) m.assign(n, 0);
     s.planeA.assign(g.nz, 0.f);
     s.planeB.assign(g.nz, 0.f);
+    s.planeSum.assign(g.nz, 0.0);
+    s.planeSumAfter.assign(g.nz, 0.0);
     s.cellClass = s.staticClass;
     s.dynamicCells.clear();
     rebuildDerived(s, 0, g.nz - 1);
@@ -128,6 +130,54 @@ float densityDecay(const SmokeState& s, const SmokeSettings& st, float dt) {
         rate += ramp * st.fadeDissipation;
     }
     return static_cast<float>(std::exp(-rate * dt));
+}
+
+double planeDensity(const std::vector<float>& density, const kernels::Dims& d, int k) {
+    double sum = 0;
+    for (int j = 1; j < d.ny - 1; ++j) {
+        const float* row = density.data() + d.sy * j + d.sz * k;
+        for (int i = 1; i < d.nx - 1; ++i) sum += row[i];
+    }
+    return sum;
+}
+
+double borderOutflow(const SmokeState& s, float dt) {
+    const GridInfo& g = s.grid;
+    const auto& d = s.dims;
+    const float perMetre = dt / static_cast<float>(g.cellSize);
+    // Fraction of the interior cell leaving through the face (upwind, at most all of it).
+    auto out = [&](float outwardSpeed, std::size_t interior) {
+        const float f = kernels::clampf(outwardSpeed * perMetre, 0.f, 1.f);
+        return static_cast<double>(f * s.density[interior]);
+    };
+    double sum = 0;
+    const std::size_t sy = static_cast<std::size_t>(d.sy), sz = static_cast<std::size_t>(d.sz);
+    for (int k = 1; k < g.nz - 1; ++k)
+        for (int j = 1; j < g.ny - 1; ++j) {
+            const std::size_t lo = g.index(1, j, k), hi = g.index(g.nx - 1, j, k);
+            if (s.cellClass[lo - 1] == kOpen) sum += out(-s.u[lo], lo);
+            if (s.cellClass[hi] == kOpen) sum += out(s.u[hi], hi - 1);
+        }
+    for (int k = 1; k < g.nz - 1; ++k)
+        for (int i = 1; i < g.nx - 1; ++i) {
+            const std::size_t lo = g.index(i, 1, k), hi = g.index(i, g.ny - 1, k);
+            if (s.cellClass[lo - sy] == kOpen) sum += out(-s.v[lo], lo);
+            if (s.cellClass[hi] == kOpen) sum += out(s.v[hi], hi - sy);
+        }
+    for (int j = 1; j < g.ny - 1; ++j)
+        for (int i = 1; i < g.nx - 1; ++i) {
+            const std::size_t lo = g.index(i, j, 1), hi = g.index(i, j, g.nz - 1);
+            if (s.cellClass[lo - sz] == kOpen) sum += out(-s.w[lo], lo);
+            if (s.cellClass[hi] == kOpen) sum += out(s.w[hi], hi - sz);
+        }
+    return sum;
+}
+
+float massScale(const SmokeSettings& st, double before, double outflow, double after, float decay) {
+    if (!st.conserveMass || !(after > 1e-9)) return 1.f;
+    const double target = std::max(0.0, before - outflow) * decay;
+    // Clamped: a bounded correction per step even if something odd happened upstream.
+    return static_cast<float>(std::clamp(target / after, 0.5, 2.0));
 }
 
 void applyEmitter(SmokeState& s, const SmokeSettings& st, float dt) {

@@ -48,6 +48,7 @@ struct SmokeState {
     // Scratch.
     std::vector<float> hat[5], next[5], omega[4], rhs, pressureTmp;
     std::vector<float> planeA, planeB;  // per z-plane reduction partials (fixed order)
+    std::vector<double> planeSum, planeSumAfter;  // per z-plane density sums (mass renormalisation)
 
     Vec3 centre;           // detonation point
     Vec3 emitterCentre;
@@ -77,5 +78,11 @@ void applyEmitter(SmokeState& s, const SmokeSettings& settings, float dt);
 void patchDynamicFaces(SmokeState& s);
 void setBorderFaces(SmokeState& s);
 float densityDecay(const SmokeState& s, const SmokeSettings& settings, float dt);
+// Density (as a sum over cells) leaving through open border faces in dt, upwind.
+double borderOutflow(const SmokeState& s, float dt);
+// The factor that restores the advected density's total to (before - outflow) * decay.
+float massScale(const SmokeSettings& settings, double before, double outflow, double after, float decay);
+// Sum of density over plane k's interior cells, in row order (what both paths reduce with).
+double planeDensity(const std::vector<float>& density, const kernels::Dims& d, int k);
 
 }  // namespace obscura::smoke
