@@ -190,7 +190,9 @@ void SmokeVolume::carve(const Vec3& origin, const Vec3& direction, double length
                 if (dist >= radius) continue;
                 const std::size_t c = g.index(i, j, k);
                 const float x = static_cast<float>(dist / radius);
-                s.density[c] *= x * x;  // smooth edge: none removed at the radius, all on the axis
+                // Clear core (inner half of the radius), smoothstep edge out to the radius.
+                const float e = kernels::clampf(2.f * x - 1.f, 0.f, 1.f);
+                s.density[c] *= e * e * (3.f - 2.f * e);
                 const float along = 1.f - x;
                 std::vector<float>* f[3] = {&s.u, &s.v, &s.w};
                 for (int a = 0; a < 3; ++a)

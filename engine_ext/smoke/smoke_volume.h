@@ -66,7 +66,7 @@ public:
     void setMovingObstacles(const std::vector<MovingObstacle>& obstacles);
 
     // A bullet: removes smoke within `radius` of the segment origin + t * direction, t in
-    // [0, length] (smoothly: full removal on the axis, none at the radius) and gives the air a
+    // [0, length] (all of it within radius / 2, a smoothstep edge out to the radius) and gives the air a
     // wake along the ray (wakeSpeed m/s on the axis) so the tunnel closes by the flow.
     void carve(const Vec3& origin, const Vec3& direction, double length, double radius, double wakeSpeed = 3.0);
 

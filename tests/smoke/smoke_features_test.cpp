@@ -1,0 +1,191 @@
+// Gameplay features: bad input at creation, bullets carving, moving obstacles, lifetime, texture
+// export with self-shadowing, the manager's cap.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "smoke/smoke_manager.h"
+#include "smoke_test_levels.h"
+
+using namespace obscura;
+using namespace obscura::smoke;
+
+namespace {
+
+const map::Level& room() {
+    static const map::Level l = testlevels::closedRoom({-2.5, 0, -2.5}, {2.5, 2.75, 2.5});
+    return l;
+}
+
+std::string createError(const map::Level& level, const Vec3& centre, const SmokeSettings& st) {
+    try {
+        SmokeVolume::create(level, {}, centre, st);
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+double densityAlongRay(const SmokeVolume& vol, const Vec3& a, const Vec3& b) {
+    double sum = 0;
+    for (int i = 0; i <= 20; ++i) sum += vol.sampleDensity(a + (b - a) * (i / 20.0));
+    return sum / 21;
+}
+
+}  // namespace
+
+TEST(SmokeCreate, BadInputGivesAClearErrorOrAClamp) {
+    const SmokeSettings st = testlevels::small(24);
+    EXPECT_NE(createError(room(), {0, -0.1, 0}, st).find("inside a solid"), std::string::npos);
+    EXPECT_NE(createError(room(), {0, 50, 0}, st).find("outside the level bounds"), std::string::npos);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_NE(createError(room(), {nan, 1, 0}, st).find("not a finite"), std::string::npos);
+    EXPECT_NE(createError(map::Level{}, {0, 1, 0}, st).find("no brushes"), std::string::npos);
+    SmokeSettings badCell = st;
+    badCell.cellSize = 0;
+    EXPECT_NE(createError(room(), {0, 1, 0}, badCell).find("cell size"), std::string::npos);
+
+    SmokeSettings zero = st;
+    zero.resolution = 0;
+    EXPECT_EQ(SmokeVolume::create(room(), {}, {0, 1, 0}, zero).grid().nx, 16);
+    SmokeSettings huge = st;
+    huge.resolution = 100000;
+    huge.cellSize = 0.1;
+    const SmokeVolume big = SmokeVolume::create(room(), {}, {0, 1, 0}, huge);
+    EXPECT_EQ(big.grid().nx, 128);
+    EXPECT_EQ(big.settings().resolution, 128);
+}
+
+// A bullet clears a tunnel at once; the flow (the bullet's wake and the cloud's own motion) fills
+// it again: within 2/3 s the ray holds at least half the density of an untouched twin cloud.
+TEST(SmokeCarve, BulletTunnelClearsThenRefills) {
+    SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, testlevels::small(24));
+    SmokeVolume twin = SmokeVolume::create(room(), {}, {0, 0.1, 0}, testlevels::small(24));
+    for (int i = 0; i < 60; ++i) {  // 2 s: still emitting, a thick cloud
+        vol.step(1.0 / 30);
+        twin.step(1.0 / 30);
+    }
+    const Vec3 a{-1.125, 0.625, 0.125}, b{1.125, 0.625, 0.125};  // cell centres
+    const double before = densityAlongRay(vol, a, b);
+    vol.carve({-3, 0.625, 0.125}, {1, 0, 0}, 6.0, 0.4);
+    const double after = densityAlongRay(vol, a, b);
+    double ratio = 0;
+    for (int i = 0; i < 20; ++i) {
+        vol.step(1.0 / 30);
+        twin.step(1.0 / 30);
+        ratio = densityAlongRay(vol, a, b) / densityAlongRay(twin, a, b);
+        if (i % 5 == 4) std::cout << "  " << (i + 1) / 30.0 << " s after the shot: " << 100 * ratio << " % of the twin\n";
+    }
+    std::cout << "density on the ray: " << before << " -> carved " << after << "\n";
+    EXPECT_GT(before, 0.2);
+    EXPECT_LT(after, 0.05 * before);
+    EXPECT_GT(ratio, 0.5);
+}
+
+TEST(SmokeMoving, ObstaclePushesTheSmoke) {
+    SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, testlevels::small(24));
+    for (int i = 0; i < 60; ++i) vol.step(1.0 / 30);
+    const double mass = vol.totalDensity();
+    MovingObstacle player;
+    player.radius = 0.45;
+    player.velocity = {4, 0, 0};
+    for (int i = 0; i < 15; ++i) {
+        player.centre = {-1.5 + 4.0 * i / 30.0, 0.8, 0};
+        vol.setMovingObstacles({player});
+        vol.step(1.0 / 30);
+        const Vec3 c = vol.grid().toCellCoords(player.centre);
+        const int ci = static_cast<int>(std::lround(c.x)), cj = static_cast<int>(std::lround(c.y)),
+                  ck = static_cast<int>(std::lround(c.z));
+        EXPECT_TRUE(vol.solidAt(ci, cj, ck));
+        EXPECT_EQ(vol.densityAt(ci, cj, ck), 0.f);
+    }
+    // The air just ahead of the sphere moves with it.
+    const GridInfo& g = vol.grid();
+    const Vec3 ahead = g.toCellCoords(player.centre + Vec3{player.radius + 0.2, 0, 0});
+    const std::size_t c = g.index(static_cast<int>(std::lround(ahead.x)), static_cast<int>(std::lround(ahead.y)),
+                                  static_cast<int>(std::lround(ahead.z)));
+    EXPECT_GT(vol.state().u[c], 0.5);
+    vol.setMovingObstacles({});
+    vol.step(1.0 / 30);
+    EXPECT_GT(vol.totalDensity(), 0.8 * mass) << "the obstacle moves smoke, it does not eat it";
+    std::string why;
+    EXPECT_TRUE(vol.validate(&why)) << why;
+}
+
+TEST(SmokeLifetime, FadesOutAndFinishes) {
+    SmokeSettings st = testlevels::small(20);
+    SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, st);
+    double peak = 0;
+    while (!vol.finished()) {
+        vol.step(0.1);
+        peak = std::max(peak, vol.totalDensity());
+        if (vol.age() > 30) break;
+    }
+    EXPECT_TRUE(vol.finished());
+    EXPECT_NEAR(vol.age(), st.lifetime, 0.11);
+    std::cout << "peak " << peak << ", at the end " << vol.totalDensity() << "\n";
+    EXPECT_LT(vol.totalDensity(), 0.03 * peak);
+}
+
+TEST(SmokeExport, TransmittanceAndPackedTexture) {
+    SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, testlevels::small(24));
+    for (int i = 0; i < 60; ++i) vol.step(1.0 / 30);
+    EXPECT_EQ(vol.transmittance().size(), vol.grid().cells());
+    vol.computeTransmittance({0, 1, 0});  // sun straight above
+    const GridInfo& g = vol.grid();
+    // Down a column through the cloud, transmittance never increases.
+    const Vec3 c = g.toCellCoords({0, 0, 0});
+    const int ci = static_cast<int>(std::lround(c.x)), ck = static_cast<int>(std::lround(c.z));
+    float prev = 1.f;
+    for (int j = g.ny - 1; j >= 0; --j) {
+        const float t = vol.transmittance()[g.index(ci, j, ck)];
+        EXPECT_LE(t, prev + 1e-6f);
+        EXPECT_GE(t, 0.f);
+        prev = t;
+    }
+    EXPECT_LT(prev, 0.9f) << "the floor under the cloud is in its shadow";
+    // A slanted light gives values in [0, 1] too.
+    vol.computeTransmittance({0.6, 0.5, -0.3});
+    std::string why;
+    EXPECT_TRUE(vol.validate(&why)) << why;
+
+    std::vector<std::uint8_t> rg8;
+    vol.exportRG8(rg8);
+    ASSERT_EQ(rg8.size(), 2 * g.cells());
+    std::vector<float> rgf;
+    vol.exportRGFloat(rgf);
+    ASSERT_EQ(rgf.size(), 2 * g.cells());
+    std::size_t nonZero = 0;
+    for (std::size_t i = 0; i < g.cells(); ++i) {
+        const float d = std::min(1.f, rgf[2 * i]);
+        EXPECT_NEAR(rg8[2 * i], std::lround(d * 255), 1);
+        EXPECT_NEAR(rg8[2 * i + 1], std::lround(rgf[2 * i + 1] * 255), 1);
+        nonZero += rg8[2 * i] != 0;
+    }
+    EXPECT_GT(nonZero, 50u);
+}
+
+TEST(SmokeManager, KeepsAtMostNAndDropsFinished) {
+    SmokeSettings st = testlevels::small(16);
+    st.lifetime = 1.0;
+    st.emitTime = 0.3;
+    st.fadeTime = 0.5;
+    SmokeManager manager(2, st);
+    const int a = manager.spawn(room(), {}, {-1, 0.1, 0});
+    manager.step(0.1);
+    const int b = manager.spawn(room(), {}, {1, 0.1, 0});
+    const int c = manager.spawn(room(), {}, {0, 0.1, 1});
+    ASSERT_EQ(manager.volumes().size(), 2u);
+    EXPECT_EQ(manager.volumes()[0].id, b);
+    EXPECT_EQ(manager.volumes()[1].id, c);
+    EXPECT_NE(a, b);
+    EXPECT_THROW(manager.spawn(room(), {}, {0, -1, 0}), std::runtime_error);
+    EXPECT_EQ(manager.volumes().size(), 2u);
+    manager.step(0.1);
+    EXPECT_GT(manager.sampleDensity({1, 0.4, 0}) + manager.sampleDensity({0, 0.4, 1}), 0.0);
+    EXPECT_GT(manager.opticalDepth({-2, 0.4, 0}, {2, 0.4, 0}), 0.0);
+    for (int i = 0; i < 12; ++i) manager.step(0.1);
+    EXPECT_TRUE(manager.volumes().empty());
+}
