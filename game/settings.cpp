@@ -110,7 +110,7 @@ struct Option {
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
-                                    "timedemo", "config", "data-dir", "log"};
+                                    "timedemo", "config", "data-dir", "log", "debug-max-render-targets"};
 
 struct SettingsParser::Impl {
     std::vector<Option> options;
@@ -157,7 +157,7 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"fov", "horizontal field of view in degrees", num(&S::fov, "fov", 40, 140)});
     I.add({"mouse-sensitivity", "mouse sensitivity (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
     I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
-    I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon (O cycles them)", [](S& s, W v, W where) {
+    I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield (O cycles them)", [](S& s, W v, W where) {
                if (!ssao::isMode(v)) {
                    std::string all;
                    for (const auto& m : ssao::modeNames()) all += (all.empty() ? "" : ", ") + m;
@@ -174,6 +174,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
            }});
     I.add({"ao-only", "show the AO term alone", flag(&S::aoOnly, "ao-only"), true});
     I.add({"ssao-samples", "AO samples per pixel (1..32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
+    I.add({"debug-max-render-targets", "debug: pretend the GPU has at most N simultaneous render targets (0 = as it is)",
+           integer(&S::debugMaxRenderTargets, "debug-max-render-targets", 0, 8)});
     I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});
     I.add({"ticks", "run this many simulation ticks, then exit (headless default 300)", [](S& s, W v, W where) {
                s.ticks = static_cast<long>(parseClamped(v, 0, 1e9, where, "ticks"));

@@ -46,6 +46,7 @@ struct Settings {
     double ssaoIntensity = 2.0;  // measured: against the ray-traced reference, 2 beats 1 on most views
     int ssaoSamples = 16;
     bool ssaoHalfResolution = true;
+    int debugMaxRenderTargets = 0;  // debug: pretend the GPU has at most this many MRTs (0 = real)
     bool aoOnly = false;         // show the AO term alone (P toggles it)
     // Headless runs
     bool headless = false;

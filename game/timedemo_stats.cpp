@@ -47,4 +47,37 @@ std::string formatFrameStats(const FrameStats& s, const std::string& name) {
     return buf;
 }
 
+std::string formatSegments(const std::vector<TimedemoSegment>& segments, std::size_t warmup) {
+    if (segments.size() < 2) return {};
+    auto steady = [warmup](const std::vector<double>& v) {
+        const auto skip = static_cast<std::ptrdiff_t>(std::min(warmup, v.size()));
+        return computeFrameStats({v.begin() + skip, v.end()});
+    };
+    std::vector<FrameStats> wall, cpu;
+    for (const auto& seg : segments) {
+        wall.push_back(steady(seg.frameMs));
+        cpu.push_back(steady(seg.cpuMs));
+    }
+    std::string out = "segments (first " + std::to_string(warmup) + " frames of each left out; cpu = process CPU ms a frame):\n";
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "  %-44s %6s %9s %8s %8s %9s %9s %9s\n", "segment", "frames", "mean ms", "median",
+                  "p95", "vs first", "cpu ms", "vs first");
+    out += buf;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        std::snprintf(buf, sizeof buf, "  %-44s %6zu %9.2f %8.2f %8.2f %+9.2f %9.2f %+9.2f\n", segments[i].label.c_str(),
+                      wall[i].frames, wall[i].meanMs, wall[i].medianMs, wall[i].p95Ms, wall[i].meanMs - wall[0].meanMs,
+                      cpu[i].meanMs, cpu[i].meanMs - cpu[0].meanMs);
+        out += buf;
+    }
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        std::snprintf(buf, sizeof buf,
+                      "timedemo-segment index=%zu label=\"%s\" frames=%zu mean_ms=%.4f median_ms=%.4f p95_ms=%.4f "
+                      "added_ms=%.4f cpu_ms=%.4f added_cpu_ms=%.4f\n",
+                      i, segments[i].label.c_str(), wall[i].frames, wall[i].meanMs, wall[i].medianMs, wall[i].p95Ms,
+                      wall[i].meanMs - wall[0].meanMs, cpu[i].meanMs, cpu[i].meanMs - cpu[0].meanMs);
+        out += buf;
+    }
+    return out;
+}
+
 }  // namespace obscura

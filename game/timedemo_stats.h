@@ -13,6 +13,20 @@ struct FrameStats {
 };
 
 FrameStats computeFrameStats(std::vector<double> frameMs);
+
+// A timedemo split where its script changes settings (`set` lines): the frames after each change,
+// labelled with what was set, so one run compares e.g. every AO mode on the same view.
+struct TimedemoSegment {
+    std::string label;           // "ssao=horizon ssao-samples=8", or "start"
+    std::vector<double> frameMs;
+    // CPU time the whole process (llvmpipe's rasteriser threads included) spent per frame: on a
+    // machine shared with other jobs it measures a software renderer's work where wall time cannot.
+    std::vector<double> cpuMs;
+};
+// A table of the segments (the first `warmup` frames of each left out: a new compositor compiles
+// its shaders there), each with its mean wall and CPU time and their differences from the first
+// segment's, then one machine-readable "timedemo-segment " line each. Empty for one segment.
+std::string formatSegments(const std::vector<TimedemoSegment>& segments, std::size_t warmup);
 // Human-readable lines, then one machine-readable line starting with "timedemo ".
 std::string formatFrameStats(const FrameStats& s, const std::string& name);
 

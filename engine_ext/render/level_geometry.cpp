@@ -1,4 +1,5 @@
 // See level_geometry.h.
+#include "render/ogre_convert.h"
 #include "render/level_geometry.h"
 
 #include "render/level_materials.h"
@@ -26,9 +27,6 @@ bool isSky(const std::string& texture) {
            (texture[2] == 'y' || texture[2] == 'Y');
 }
 
-Ogre::Vector3 toOgre(const Vec3& v) {
-    return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
-}
 
 // A Quake `light` of 300 (the default) is a bright bulb; this maps it to a diffuse colour of
 // about 1.5 at the light, which with the squared falloff in level.frag reads like Quake's lighting.
@@ -69,6 +67,7 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
     for (const auto& [key, byMaterial] : chunks) {
         auto* mo = scene_.createManualObject();
         mo->setCastShadows(!key.sky);  // into the sun's shadow map
+        if (key.sky) mo->setVisibilityFlags(kSkyVisibilityFlag);
         for (const auto& [material, polys] : byMaterial) {
             mo->begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
             Ogre::uint32 base = 0;

@@ -27,6 +27,10 @@ struct LevelGeometryStats {
     std::size_t lights = 0;
 };
 
+// Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
+// that must not see the sky, such as the AO height map, mask it out.
+constexpr unsigned kSkyVisibilityFlag = 1u << 30;
+
 class LevelGeometry {
 public:
     // chunkSize: metres per chunk edge. 16 m keeps a room or two per chunk: big enough that

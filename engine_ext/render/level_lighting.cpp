@@ -1,5 +1,6 @@
 // See level_lighting.h.
 #include "render/level_lighting.h"
+#include "render/ogre_convert.h"
 
 #include <Ogre.h>
 #include <OgreGpuProgramManager.h>
@@ -36,9 +37,6 @@ Vec3 parseColour(const std::string& s) {
     return c;
 }
 
-Ogre::Vector3 toOgre(const Vec3& v) {
-    return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
-}
 }  // namespace
 
 LevelLightingParams computeLevelLighting(const map::Level& level) {

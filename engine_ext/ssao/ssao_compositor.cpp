@@ -11,10 +11,15 @@ namespace obscura::ssao {
 
 namespace {
 // Pass identifiers (media/ssao/ssao.compositor).
-constexpr Ogre::uint32 kBlurX = 1, kBlurY = 2, kAoPass = 10, kModulate = 20;
+constexpr Ogre::uint32 kBlurX = 1, kBlurY = 2, kAoPass = 10, kComposite = 20;
 constexpr int kMaxSamples = 32;          // the shaders' kernel[] size
 constexpr int kNoiseSize = 4;            // 4x4 interleaved rotations: the blur's 5 taps cover it
+constexpr int kRenderTargets = 4;        // the G-buffer's (media/ssao/ssao.compositor)
+// 1024^2 texels: 10 cm over the arena, 15 cm over e3m4; 4 MB, rendered once per level.
+constexpr unsigned kHeightMapSize = 1024;
+constexpr float kNoHeight = -1e4f;       // metres: "nothing here" in the height map
 const char* const kScheme = "GBuffer";
+const char* const kHeightScheme = "AOHeight";
 
 std::vector<float> flatten(const std::vector<Vec3>& v) {
     std::vector<float> f;
@@ -53,17 +58,96 @@ AmbientOcclusion::AmbientOcclusion(Ogre::Viewport& viewport, Ogre::Camera& camer
     noise_ = Ogre::TextureManager::getSingleton().loadImage("Obscura/SSAO/Noise", Ogre::RGN_DEFAULT, image,
                                                            Ogre::TEX_TYPE_2D, 0);
 
-    gbufferMaterial_ = Ogre::MaterialManager::getSingleton().getByName("Obscura/SSAO/GBuffer");
-    if (!gbufferMaterial_) throw std::runtime_error("material Obscura/SSAO/GBuffer is missing (media/ssao/ssao.material)");
+    auto& mm = Ogre::MaterialManager::getSingleton();
+    gbufferMaterial_ = mm.getByName("Obscura/Level/GBufferFallback");
+    heightMaterial_ = mm.getByName("Obscura/SSAO/HeightMap");
+    if (!gbufferMaterial_ || !heightMaterial_)
+        throw std::runtime_error("materials Obscura/Level/GBufferFallback (media/materials/level.material) or "
+                                 "Obscura/SSAO/HeightMap (media/ssao/ssao.material) are missing");
     gbufferMaterial_->load();
-    Ogre::MaterialManager::getSingleton().addListener(this, kScheme);
+    heightMaterial_->load();
+    mm.addListener(this, kScheme);
+    mm.addListener(this, kHeightScheme);
+
+    // Until buildHeightMap: one texel of "nothing", so heightfield reads as the horizon mode.
+    const float none = kNoHeight;
+    Ogre::Image flat;
+    flat.loadDynamicImage(reinterpret_cast<Ogre::uchar*>(const_cast<float*>(&none)), 1, 1, 1, Ogre::PF_FLOAT32_R);
+    heightMap_ = Ogre::TextureManager::getSingleton().loadImage("Obscura/SSAO/NoHeightMap", Ogre::RGN_DEFAULT, flat,
+                                                               Ogre::TEX_TYPE_2D, 0);
+}
+
+void AmbientOcclusion::buildHeightMap(Ogre::SceneManager& scene, const Ogre::AxisAlignedBox& bounds,
+                                      Ogre::uint32 excludeFlags) {
+    if (bounds.isNull() || bounds.isInfinite()) return;
+    auto& tm = Ogre::TextureManager::getSingleton();
+    tm.remove(heightMap_);
+    heightMap_ = tm.createManual("Obscura/SSAO/HeightMap", Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_2D, kHeightMapSize,
+                                 kHeightMapSize, 0, Ogre::PF_FLOAT32_R, Ogre::TU_RENDERTARGET);
+    Ogre::RenderTexture* rt = heightMap_->getBuffer()->getRenderTarget();
+    rt->setAutoUpdated(false);
+
+    // An orthographic camera over the level looking straight down; nearest = highest.
+    const Ogre::Vector3 c = bounds.getCenter(), size = bounds.getSize();
+    Ogre::Camera* cam = scene.createCamera("Obscura/SSAO/HeightCamera");
+    Ogre::SceneNode* node = scene.getRootSceneNode()->createChildSceneNode(Ogre::Vector3(c.x, bounds.getMaximum().y + 1, c.z));
+    node->setFixedYawAxis(false);
+    node->setOrientation(Ogre::Quaternion(Ogre::Degree(-90), Ogre::Vector3::UNIT_X));  // looks down -Y, up = -Z
+    node->attachObject(cam);
+    cam->setProjectionType(Ogre::PT_ORTHOGRAPHIC);
+    cam->setOrthoWindow(size.x, size.z);
+    cam->setNearClipDistance(0.5f);
+    cam->setFarClipDistance(size.y + 2);
+
+    Ogre::Viewport* vp = rt->addViewport(cam);
+    vp->setClearEveryFrame(true);
+    vp->setBackgroundColour(Ogre::ColourValue(kNoHeight, kNoHeight, kNoHeight, 1));
+    vp->setMaterialScheme(kHeightScheme);
+    vp->setShadowsEnabled(false);
+    vp->setOverlaysEnabled(false);
+    vp->setSkiesEnabled(false);
+    vp->setVisibilityMask(~excludeFlags);
+    rt->update();
+    {   // One log line to check the map by: how much of the level it covers, and the height range.
+        std::vector<float> texels(kHeightMapSize * kHeightMapSize);
+        heightMap_->getBuffer()->blitToMemory(Ogre::PixelBox(kHeightMapSize, kHeightMapSize, 1, Ogre::PF_FLOAT32_R, texels.data()));
+        std::size_t hit = 0;
+        float lo = 1e30f, hi = -1e30f;
+        for (float h : texels)
+            if (h > kNoHeight * 0.5f) {
+                ++hit;
+                lo = std::min(lo, h);
+                hi = std::max(hi, h);
+            }
+        Ogre::LogManager::getSingleton().stream() << "AO height map: " << kHeightMapSize << "^2 over " << size.x << " x "
+                                                  << size.z << " m, " << (100.0 * hit / texels.size())
+                                                  << "% covered, heights " << lo << " .. " << hi << " m";
+    }
+
+    // world -> texture: the texture is stored upside down when the render system flips RTTs.
+    Ogre::Matrix4 flip = Ogre::Matrix4::IDENTITY;
+    if (rt->requiresTextureFlipping()) flip[1][1] = -1;
+    heightViewProj_ = flip * cam->getProjectionMatrix() * cam->getViewMatrix();
+
+    rt->removeAllViewports();
+    node->detachAllObjects();
+    scene.destroySceneNode(node);
+    scene.destroyCamera(cam);
+    if (mode_ == "heightfield") {  // rebind: the material holds the old texture
+        const std::string m = mode_;
+        mode_ = "off";
+        setMode(m);
+    }
 }
 
 AmbientOcclusion::~AmbientOcclusion() {
     removeCompositors();
     Ogre::MaterialManager::getSingleton().removeListener(this, kScheme);
+    Ogre::MaterialManager::getSingleton().removeListener(this, kHeightScheme);
     gbufferMaterial_.reset();
+    heightMaterial_.reset();
     Ogre::TextureManager::getSingleton().remove(noise_);
+    Ogre::TextureManager::getSingleton().remove(heightMap_);
 }
 
 void AmbientOcclusion::removeCompositors() {
@@ -80,7 +164,14 @@ bool AmbientOcclusion::setMode(const std::string& mode) {
     removeCompositors();
     halfResolution_ = knobs_.halfResolution;
     mode_ = "off";
+    failure_.clear();
     if (mode == "off") return true;
+    failure_ = missingFeatures();
+    if (!failure_.empty()) {
+        failure_ = "AO mode '" + mode + "' needs " + failure_ + "; AO off";
+        Ogre::LogManager::getSingleton().logError(failure_);
+        return false;
+    }
     auto& cm = Ogre::CompositorManager::getSingleton();
     for (const std::string& name : {std::string("Obscura/SSAO/GBuffer"), compositorFor(mode)}) {
         // The AO buffers' size is the one knob the script leaves to code.
@@ -90,9 +181,9 @@ bool AmbientOcclusion::setMode(const std::string& mode) {
                     if (auto* def = comp->getTechnique(t)->getTextureDefinition(buffer))
                         def->widthFactor = def->heightFactor = halfResolution_ ? 0.5f : 1.0f;
         Ogre::CompositorInstance* inst = cm.addCompositor(&viewport_, name);
-        if (!inst) {
-            Ogre::LogManager::getSingleton().logError("AO mode '" + mode + "': compositor " + name +
-                                                      " cannot run here (see above); AO off");
+        if (!inst || !inst->getTechnique()) {
+            failure_ = "AO mode '" + mode + "': compositor " + name + " cannot run here (see the OGRE log); AO off";
+            Ogre::LogManager::getSingleton().logError(failure_);
             removeCompositors();
             return false;
         }
@@ -104,15 +195,34 @@ bool AmbientOcclusion::setMode(const std::string& mode) {
     return true;
 }
 
+std::string AmbientOcclusion::missingFeatures() const {
+    const Ogre::RenderSystemCapabilities* caps = Ogre::Root::getSingleton().getRenderSystem()->getCapabilities();
+    int targets = caps ? caps->getNumMultiRenderTargets() : 0;
+    if (renderTargetLimit_ > 0) targets = std::min(targets, renderTargetLimit_);
+    if (targets < kRenderTargets)
+        return std::to_string(kRenderTargets) + " simultaneous render targets and this GPU has " + std::to_string(targets);
+    auto& tm = Ogre::TextureManager::getSingleton();
+    for (Ogre::PixelFormat f : {Ogre::PF_FLOAT32_R, Ogre::PF_FLOAT16_RGBA, Ogre::PF_FLOAT16_GR})
+        if (!tm.isFormatSupported(Ogre::TEX_TYPE_2D, f, Ogre::TU_RENDERTARGET))
+            return "render targets in " + Ogre::PixelUtil::getFormatName(f) + ", which this GPU lacks";
+    return {};
+}
+
 void AmbientOcclusion::notifyMaterialSetup(Ogre::uint32 passId, Ogre::MaterialPtr& mat) {
-    // The noise texture is made here, not found on disk: bind it to the AO passes' noiseMap unit.
-    if (passId == kAoPass) mat->getTechnique(0)->getPass(0)->getTextureUnitState("noiseMap")->setTexture(noise_);
+    // The noise texture and the height map are made here, not found on disk: bind them by unit name.
+    if (passId != kAoPass) return;
+    Ogre::Pass* pass = mat->getTechnique(0)->getPass(0);
+    pass->getTextureUnitState("noiseMap")->setTexture(noise_);
+    if (auto* heights = pass->getTextureUnitState("heightMap")) heights->setTexture(heightMap_);
 }
 
 void AmbientOcclusion::notifyMaterialRender(Ogre::uint32 passId, Ogre::MaterialPtr& mat) {
     Ogre::Pass* pass = mat->getBestTechnique()->getPass(0);
     if (!pass->hasFragmentProgram()) return;
     Ogre::GpuProgramParametersSharedPtr fp = pass->getFragmentProgramParameters();
+    // A mode's shader need not use every knob (the GLSL compiler drops unused uniforms): never throw
+    // inside the frame for that.
+    fp->setIgnoreMissingParams(true);
     if (passId == kAoPass) {
         const Ogre::Matrix4& proj = camera_.getProjectionMatrix();
         fp->setNamedConstant("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
@@ -124,21 +234,23 @@ void AmbientOcclusion::notifyMaterialRender(Ogre::uint32 passId, Ogre::MaterialP
         // Sphere kernels for the depth-only and cone modes, hemispheres for the normal-oriented one.
         const auto& k = mode_ == "crytek" || mode_ == "cone" ? sphereKernel_ : hemisphereKernel_;
         fp->setNamedConstant("kernel", k.data(), static_cast<size_t>(kMaxSamples), 3);
+        if (mode_ == "heightfield") {
+            fp->setNamedConstant("inverseView", camera_.getViewMatrix().inverse());
+            fp->setNamedConstant("heightViewProj", heightViewProj_);
+        }
     } else if (passId == kBlurX || passId == kBlurY) {
-        const Ogre::TextureUnitState* in = pass->getTextureUnitState(0);
-        const auto tex = in->_getTexturePtr();
-        const float w = tex ? static_cast<float>(tex->getWidth()) : 1.0f, h = tex ? static_cast<float>(tex->getHeight()) : 1.0f;
-        fp->setNamedConstant("direction", passId == kBlurX ? Ogre::Vector2(1.0f / w, 0) : Ogre::Vector2(0, 1.0f / h));
-    } else if (passId == kModulate) {
+        fp->setNamedConstant("direction", passId == kBlurX ? Ogre::Vector2(1, 0) : Ogre::Vector2(0, 1));
+    } else if (passId == kComposite) {
         fp->setNamedConstant("aoOnly", aoOnly_ ? 1.0f : 0.0f);
     }
 }
 
 Ogre::Technique* AmbientOcclusion::handleSchemeNotFound(unsigned short, const Ogre::String& schemeName, Ogre::Material*,
                                                         unsigned short, const Ogre::Renderable*) {
-    if (schemeName != kScheme) return nullptr;
-    // getTechnique, not getBestTechnique: the latter would ask this listener again for GBuffer.
-    return gbufferMaterial_->getTechnique(0);
+    // getTechnique, not getBestTechnique: the latter would ask this listener again.
+    if (schemeName == kScheme) return gbufferMaterial_->getTechnique(0);
+    if (schemeName == kHeightScheme) return heightMaterial_->getTechnique(0);
+    return nullptr;
 }
 
 }  // namespace obscura::ssao

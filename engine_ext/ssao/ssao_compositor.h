@@ -1,6 +1,7 @@
 // OGRE glue of the AO modes: installs the GBuffer material scheme (every material gets the
-// G-buffer technique without edits), the per-pixel noise texture and the kernel, and switches the
-// compositor chain on a viewport when the mode changes. Knob values come from the game.
+// G-buffer technique without edits), the per-pixel noise texture, the kernel and the level's
+// top-down height map (heightfield mode), and switches the compositor chain on a viewport when the
+// mode changes. Knob values come from the game.
 #pragma once
 
 #include <OgreCompositorInstance.h>
@@ -12,7 +13,9 @@
 #include <vector>
 
 namespace Ogre {
+class AxisAlignedBox;
 class Camera;
+class SceneManager;
 class Viewport;
 }  // namespace Ogre
 
@@ -32,9 +35,17 @@ public:
     AmbientOcclusion(const AmbientOcclusion&) = delete;
     AmbientOcclusion& operator=(const AmbientOcclusion&) = delete;
 
-    // Switches the chain; a mode whose compositor cannot run here falls back to "off" and
-    // returns false (the reason is in the log).
+    // Switches the chain. A mode that cannot run here (a GPU feature missing, a compositor that
+    // does not compile) falls back to "off" and returns false; failureReason() says why.
     bool setMode(const std::string& mode);
+    const std::string& failureReason() const { return failure_; }
+    // Pretend the GPU has at most this many simultaneous render targets (a debug setting that lets
+    // tests walk the missing-feature path on a GPU that has them all); 0 = the real number.
+    void limitRenderTargets(int n) { renderTargetLimit_ = n; }
+    // Renders the level's top-down height map for the heightfield mode: the highest surface over
+    // each spot of `bounds` (world space), leaving out objects whose visibility flags are all in
+    // `excludeFlags` (the sky). Call once the level is built; until then heightfield = horizon.
+    void buildHeightMap(Ogre::SceneManager& scene, const Ogre::AxisAlignedBox& bounds, Ogre::uint32 excludeFlags);
     const std::string& mode() const { return mode_; }
     // Radius, intensity and samples apply at the next frame; the resolution at the next setMode.
     void setKnobs(const AoKnobs& k) { knobs_ = k; }
@@ -51,17 +62,22 @@ public:
 
 private:
     void removeCompositors();
+    std::string missingFeatures() const;
 
     Ogre::Viewport& viewport_;
     Ogre::Camera& camera_;
     Ogre::TexturePtr noise_;
-    Ogre::MaterialPtr gbufferMaterial_;
+    Ogre::MaterialPtr gbufferMaterial_, heightMaterial_;
+    Ogre::TexturePtr heightMap_;
+    Ogre::Matrix4 heightViewProj_ = Ogre::Matrix4::IDENTITY;
     std::vector<float> hemisphereKernel_, sphereKernel_;  // 32 x vec3 each
     std::vector<Ogre::CompositorInstance*> instances_;
     std::string mode_ = "off";
     AoKnobs knobs_;
     bool aoOnly_ = false;
     bool halfResolution_ = true;
+    int renderTargetLimit_ = 0;
+    std::string failure_;
 };
 
 }  // namespace obscura::ssao

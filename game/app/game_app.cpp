@@ -7,6 +7,7 @@
 #include "map/map_compile.h"
 #include "render/hud.h"
 #include "render/level_geometry.h"
+#include "render/ogre_convert.h"
 #include "render/level_lighting.h"
 #include "render/level_materials.h"
 #include "render/model_loader.h"
@@ -24,6 +25,8 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cstdio>
+#include <ctime>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -239,6 +242,11 @@ void GameApp::createScene() {
     std::cout << os.str() << "\n";
 
     ao_ = std::make_unique<ssao::AmbientOcclusion>(*viewport_, *camera_, settings_.seed);
+    ao_->limitRenderTargets(settings_.debugMaxRenderTargets);
+    // The heightfield mode's height map, over the level's brushes (models stand inside them).
+    if (!level_->bounds.empty())
+        ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level_->bounds.min), render::toOgre(level_->bounds.max)),
+                            render::kSkyVisibilityFlag);
     applyAoSettings();
 
     hud_ = std::make_unique<render::Hud>();
@@ -278,7 +286,7 @@ void GameApp::applyAoSettings() {
     ao_->setKnobs(k);
     ao_->setAoOnly(settings_.aoOnly);
     if (!ao_->setMode(settings_.ssao)) {
-        std::cerr << "obscura: AO mode '" << settings_.ssao << "' cannot run on this GPU/driver (see the log); AO off\n";
+        std::cerr << "obscura: " << ao_->failureReason() << "\n";
         settings_.ssao = "off";
     }
 }
@@ -437,6 +445,12 @@ int GameApp::run() {
     if (!settings_.screenshot.empty()) {
         writeScreenshot(settings_.screenshot);
         std::cout << "screenshot " << settings_.screenshot << "\n";
+        // Where the camera was, in --start-pose's form: the player may have been moved by physics
+        // from the pose asked for, and tools/aoref traces its reference from this one.
+        const auto& p = sim_->player();
+        const Vec3 eye = p.eye();
+        std::printf("camera-pose %.4f %.4f %.4f %.4f %.4f\n", eye.x, eye.y, eye.z, p.yaw * 180.0 / 3.14159265358979323846,
+                    p.pitch * 180.0 / 3.14159265358979323846);
     }
     if (recorder_) writeRecording();
     std::cout << "state-hash " << sim_->stateHashHex() << "\n";
@@ -474,17 +488,32 @@ int GameApp::runLive() {
     return 0;
 }
 
+namespace {
+// CPU time of the whole process, all threads (llvmpipe rasterises on its own threads).
+double processCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+}  // namespace
+
 int GameApp::runReplay(bool timed) {
     std::cout << "renderer " << rendererDescription() << "\n";
     ReplayPlayer player(*script_);
     std::vector<double> frameMs;
+    std::vector<TimedemoSegment> segments(1);
     const double fixedMs = 1000.0 / settings_.tickRate;
     double lastMs = fixedMs;
     bool diverged = false;
     for (std::int64_t t = 0; t <= player.lastTick() && !quit_; ++t) {
         const auto start = std::chrono::steady_clock::now();
+        const double cpuStart = processCpuMs();
         const ReplayTick due = player.take(t);
-        for (const auto* c : due.settings) applySetting(c->name, c->value, script_->fileName + ":" + std::to_string(c->line));
+        if (!due.settings.empty() && !segments.back().frameMs.empty()) segments.push_back({});
+        for (const auto* c : due.settings) {
+            applySetting(c->name, c->value, script_->fileName + ":" + std::to_string(c->line));
+            segments.back().label += (segments.back().label.empty() ? "" : " ") + c->name + "=" + c->value;
+        }
         for (const auto& in : due.inputs) injectInput(in);
         pollEvents();
         stepSimulation();
@@ -504,8 +533,13 @@ int GameApp::runReplay(bool timed) {
         }
         lastMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         frameMs.push_back(lastMs);
+        segments.back().frameMs.push_back(lastMs);
+        segments.back().cpuMs.push_back(processCpuMs() - cpuStart);
     }
-    if (timed) std::cout << formatFrameStats(computeFrameStats(frameMs), script_->fileName);
+    for (auto& seg : segments)
+        if (seg.label.empty()) seg.label = "start";
+    // 10 frames: a new AO compositor compiles its shaders in its first two or three.
+    if (timed) std::cout << formatFrameStats(computeFrameStats(frameMs), script_->fileName) << formatSegments(segments, 10);
     return diverged ? 3 : 0;
 }
 

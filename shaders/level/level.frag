@@ -5,6 +5,9 @@
 //   turned away are not flat black
 // + up to 8 point lights per batch with Quake-like falloff reaching zero at the light's range.
 // Albedo is stored gamma-encoded; lighting is done in linear space and tone-mapped at the end.
+// Compiled twice (media/materials/level.program): as is for the plain view, and with
+// OBSCURA_GBUFFER for the AO modes' G-buffer scheme, where the same lighting is written untone-mapped
+// beside linear depth, view normal and the ambient term (shaders/ssao/README in engine_ext/ssao).
 uniform sampler2D albedoMap;
 uniform sampler2D sunShadowMap;  // -height/10^4 of the caster nearest the sun (shadow_caster.frag)
 uniform vec4 sunShadowTexel;     // 1/width, 1/height, width, height of sunShadowMap
@@ -23,7 +26,13 @@ in vec3 vNormal;
 in vec2 vUv;
 in vec4 vShadowPos;
 
+#ifdef OBSCURA_GBUFFER
+#include "gbuffer_out.glsl"
+// Materials without an albedo texture (the AO scheme's shared fallback) count as light grey.
+uniform float hasAlbedo;
+#else
 out vec4 fragColour;
+#endif
 
 // Fraction of the sun reaching this point: 2x2 percentage-closer filtering of the shadow map.
 float sunVisibility(float ndotl)
@@ -47,8 +56,12 @@ void main()
 {
     vec3 n = normalize(vNormal);
     vec3 albedo = pow(texture(albedoMap, vUv).rgb, vec3(2.2));
+#ifdef OBSCURA_GBUFFER
+    if (hasAlbedo < 0.5) albedo = vec3(0.7);
+#endif
 
-    vec3 light = mix(groundAmbient, skyAmbient, 0.5 + 0.5 * n.y);
+    vec3 ambient = mix(groundAmbient, skyAmbient, 0.5 + 0.5 * n.y);
+    vec3 light = ambient;
     float ndotl = dot(n, sunDirection);
     // Wrap lighting (0.2): keeps sunlit back faces from collapsing to the ambient floor.
     float sun = max((ndotl + 0.2) / 1.2, 0.0);
@@ -68,6 +81,10 @@ void main()
     }
 
     vec3 colour = albedo * light * exposure;
+#ifdef OBSCURA_GBUFFER
+    writeGBuffer(colour, albedo * ambient * exposure, vWorldPos, n);
+#else
     colour = vec3(1.0) - exp(-colour);   // exponential tone map: never clips hard
     fragColour = vec4(pow(colour, vec3(1.0 / 2.2)), 1.0);
+#endif
 }

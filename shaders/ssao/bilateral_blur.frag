@@ -1,23 +1,25 @@
 #version 330 core
 // Depth-aware (cross-bilateral) blur of the AO term: a 5-tap line along `direction` (separable:
-// run horizontally, then vertically), each tap weighted down by its depth difference from the
-// centre so occlusion does not bleed across silhouettes. Runs at the AO's resolution.
-uniform sampler2D aoMap;
-uniform sampler2D gbufferDepth;  // linear depth, metres
-uniform vec2 direction;        // one texel of aoMap along x or y
-uniform float depthSharpness;  // 1/m: larger keeps edges sharper
+// run horizontally, then vertically), each tap weighted down by its relative depth difference from
+// the centre so occlusion does not bleed across silhouettes. Runs at the AO's resolution on the
+// (AO, depth) pairs the AO pass wrote, and passes the centre's depth on for the upsampling.
+uniform sampler2D aoMap;       // r = AO, g = linear depth (0 = sky)
+uniform vec2 direction;        // (1, 0) or (0, 1): one texel along x or y
+uniform float depthSharpness;  // weight falloff per relative depth step
 in vec2 vUv;
 out vec4 fragColour;
 void main()
 {
-    float centreZ = texture(gbufferDepth, vUv).r;
+    ivec2 last = textureSize(aoMap, 0) - 1;
+    ivec2 pixel = clamp(ivec2(vUv * vec2(last + 1)), ivec2(0), last);
+    vec2 centre = texelFetch(aoMap, pixel, 0).rg;
+    if (centre.g <= 0.0) { fragColour = vec4(1.0, 0.0, 0.0, 1.0); return; }
     float sum = 0.0, weights = 0.0;
     for (int i = -2; i <= 2; ++i) {
-        vec2 uv = vUv + float(i) * direction;
-        float z = texture(gbufferDepth, uv).r;
-        float w = exp(-abs(z - centreZ) * depthSharpness) * (3.0 - abs(float(i)));
-        sum += texture(aoMap, uv).r * w;
+        vec2 tap = texelFetch(aoMap, clamp(pixel + i * ivec2(direction), ivec2(0), last), 0).rg;
+        float w = exp(-abs(tap.g - centre.g) / centre.g * depthSharpness) * (3.0 - abs(float(i)));
+        sum += tap.r * w;
         weights += w;
     }
-    fragColour = vec4(vec3(sum / max(weights, 1e-5)), 1.0);
+    fragColour = vec4(sum / max(weights, 1e-5), centre.g, 0.0, 1.0);
 }

@@ -10,7 +10,7 @@ const float kConeCos = 0.2588;  // cos(75 degrees): the cone's half-angle
 void main()
 {
     vec4 p = viewPosition(vUv);
-    if (p.w < 0.5) { fragColour = vec4(1.0); return; }
+    if (p.w < 0.5) { fragColour = kSkyAo; return; }
     vec3 n = viewNormal(vUv);
     vec3 rnd = pixelNoise();
     int count = int(sampleCount);
@@ -26,5 +26,5 @@ void main()
         occ += dot(v / dist, n) > kConeCos ? 1.0 - dist / radius : 0.0;
     }
     float ao = 1.0 - intensity * occ / float(count);
-    fragColour = vec4(vec3(clamp(ao, 0.0, 1.0)), 1.0);
+    fragColour = aoResult(ao, -p.z);
 }

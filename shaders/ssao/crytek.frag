@@ -9,7 +9,7 @@ out vec4 fragColour;
 void main()
 {
     vec4 p = viewPosition(vUv);
-    if (p.w < 0.5) { fragColour = vec4(1.0); return; }
+    if (p.w < 0.5) { fragColour = kSkyAo; return; }
     vec3 rnd = pixelNoise();
     int n = int(sampleCount);
     float occ = 0.0;
@@ -19,5 +19,5 @@ void main()
         occ += occluderAt(p.xyz + s, p.z);
     }
     float ao = 1.0 - intensity * max(occ / float(n) - 0.5, 0.0) * 2.0;
-    fragColour = vec4(vec3(clamp(ao, 0.0, 1.0)), 1.0);
+    fragColour = aoResult(ao, -p.z);
 }

@@ -8,7 +8,7 @@ out vec4 fragColour;
 void main()
 {
     vec4 p = viewPosition(vUv);
-    if (p.w < 0.5) { fragColour = vec4(1.0); return; }
+    if (p.w < 0.5) { fragColour = kSkyAo; return; }
     vec3 n = viewNormal(vUv);
     vec3 rnd = pixelNoise();
     vec3 t = normalize(rnd - n * dot(rnd, n));
@@ -20,5 +20,5 @@ void main()
         occ += occluderAt(p.xyz + tbn * kernel[i] * radius, p.z);
     }
     float ao = 1.0 - intensity * occ / float(count);
-    fragColour = vec4(vec3(clamp(ao, 0.0, 1.0)), 1.0);
+    fragColour = aoResult(ao, -p.z);
 }

@@ -16,6 +16,18 @@ vec2 projectToUv(vec3 p)
     return uv;
 }
 
+// The G-buffer texel under uv. texelFetch: a plain load, no filtering (several times cheaper than
+// texture() on llvmpipe, and the depth must not be filtered anyway).
+ivec2 gbufferTexel(vec2 uv)
+{
+    ivec2 size = textureSize(gbufferDepth, 0);
+    return clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+}
+float depthAt(vec2 uv)
+{
+    return texelFetch(gbufferDepth, gbufferTexel(uv), 0).r;
+}
+
 // The view-space position seen at uv (projectToUv's inverse); w = 0 for sky. The position is
 // rebuilt at the centre of the depth texel actually read: a half-resolution pass's pixel centre
 // falls between full-resolution texels, and rebuilding there tilts sloped surfaces into bands.
@@ -23,20 +35,28 @@ vec4 viewPosition(vec2 uv)
 {
     vec2 size = vec2(textureSize(gbufferDepth, 0));
     uv = (floor(uv * size) + 0.5) / size;
-    float depth = texture(gbufferDepth, uv).r;
+    float depth = depthAt(uv);
     vec2 ndc = vec2(uv.x, flipY > 0.5 ? 1.0 - uv.y : uv.y) * 2.0 - 1.0;
     return vec4(ndc / projScale * depth, -depth, depth > 0.0 ? 1.0 : 0.0);
 }
 
 vec3 viewNormal(vec2 uv)
 {
-    return normalize(texture(gbufferNormal, uv).xyz * 2.0 - 1.0);
+    return normalize(texelFetch(gbufferNormal, gbufferTexel(uv), 0).xyz * 2.0 - 1.0);
 }
+
+// What every AO pass writes: the AO term and this pixel's linear depth, which the blur and the
+// composite's depth-aware upsampling read beside it (depth 0 = sky, never occluded).
+vec4 aoResult(float ao, float depth)
+{
+    return vec4(clamp(ao, 0.0, 1.0), depth, 0.0, 1.0);
+}
+const vec4 kSkyAo = vec4(1.0, 0.0, 0.0, 1.0);
 
 // Random rotation per pixel from a tiled 4x4 texture (interleaved sampling).
 vec3 pixelNoise()
 {
-    return normalize(texture(noiseMap, gl_FragCoord.xy / 4.0).xyz * 2.0 - 1.0);
+    return normalize(texelFetch(noiseMap, ivec2(gl_FragCoord.xy) & 3, 0).xyz * 2.0 - 1.0);
 }
 
 // 1 if the scene surface seen at q's pixel lies in front of q (q is inside geometry), weighted
@@ -45,7 +65,7 @@ float occluderAt(vec3 q, float centreZ)
 {
     vec2 uv = projectToUv(q);
     if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) return 0.0;
-    float depth = texture(gbufferDepth, uv).r;
+    float depth = depthAt(uv);
     if (depth <= 0.0) return 0.0;  // sky
     float sz = -depth;
     float inFront = sz >= q.z + 0.02 * radius ? 1.0 : 0.0;

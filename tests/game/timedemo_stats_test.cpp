@@ -27,3 +27,14 @@ TEST(TimedemoStats, MachineReadableLine) {
     EXPECT_NE(text.find("timedemo name=demo frames=2 seconds=0.0300"), std::string::npos) << text;
     EXPECT_NE(text.find("mean_ms=15.0000"), std::string::npos) << text;
 }
+
+TEST(TimedemoStats, SegmentsLeaveOutWarmupAndCompareWithTheFirst) {
+    std::vector<TimedemoSegment> segs = {{"start", {100, 10, 10, 10}, {90, 20, 20, 20}},
+                                         {"ssao=horizon", {500, 30, 34}, {400, 50, 60}}};
+    const std::string text = formatSegments(segs, 1);
+    // The 100 and 500 ms warm-up frames are left out: means 10 and 32, so +22 against the first.
+    EXPECT_NE(text.find("label=\"ssao=horizon\" frames=2 mean_ms=32.0000"), std::string::npos) << text;
+    EXPECT_NE(text.find("added_ms=22.0000 cpu_ms=55.0000 added_cpu_ms=35.0000"), std::string::npos) << text;
+    EXPECT_NE(text.find("label=\"start\" frames=3 mean_ms=10.0000"), std::string::npos) << text;
+    EXPECT_EQ(formatSegments({segs[0]}, 1), "");
+}

@@ -15,5 +15,6 @@ TEST(SsaoModes, CycleForwardAndBackWraps) {
     EXPECT_EQ(cycleMode(m[1], -1), "off");
     EXPECT_EQ(cycleMode("nonsense", +1), m[1]);
     EXPECT_TRUE(isMode("hemisphere"));
+    EXPECT_TRUE(isMode("heightfield"));
     EXPECT_FALSE(isMode("Hemisphere"));
 }

@@ -1,0 +1,83 @@
+// The AO modes in the real game, headless: each mode darkens only ambient light (never brightens
+// a pixel, leaves the sky alone), the AO-only view shows occlusion where the courtyard's creases
+// are, and a GPU without a needed feature gets a clear message and the plain view.
+#include <gtest/gtest.h>
+
+#include "core/image.h"
+#include "run_process.h"
+#include "ssao/ssao_modes.h"
+
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+// The courtyard's east end: pillars, the low wall, the ramp, the tall wall; sky at the top.
+const char* const kView = "--start-pose '26 1.65 -24 -30 -10'";
+// Looking up past the tall east wall: the upper third of the frame is sky.
+const char* const kSkyView = "--start-pose '26 1.65 -24 -30 30'";
+
+obscura::testing_support::ProcessResult game(const std::string& args, const char* view = kView) {
+    return obscura::testing_support::runProcess(std::string("'" OBSCURA_GAME "' --headless --ticks 1 --width 320 "
+                                                            "--height 180 --hud off ") + view + " " + args + " 2>&1");
+}
+
+std::string shot(const std::string& name) { return (fs::path(testing::TempDir()) / ("ssao_" + name + ".png")).string(); }
+
+obscura::Image render(const std::string& name, const std::string& args, const char* view = kView) {
+    const auto r = game(args + " --screenshot " + shot(name), view);
+    EXPECT_EQ(r.code, 0) << r.out;
+    return obscura::readPng(shot(name));
+}
+
+int luma(const obscura::Image& im, std::size_t pixel) {
+    const auto* p = &im.rgba[pixel * 4];
+    return (2126 * p[0] + 7152 * p[1] + 722 * p[2]) / 10000;
+}
+}  // namespace
+
+TEST(SsaoRender, EveryModeOnlyTakesLightAwayAndSomewhere) {
+    const obscura::Image off = render("off", "--ssao off");
+    for (const auto& mode : obscura::ssao::modeNames()) {
+        if (mode == "off") continue;
+        const obscura::Image on = render(mode, "--ssao " + mode);
+        ASSERT_EQ(on.rgba.size(), off.rgba.size());
+        std::size_t darker = 0, brighter = 0;
+        for (std::size_t i = 0; i < on.rgba.size() / 4; ++i) {
+            const int d = luma(on, i) - luma(off, i);
+            darker += d < -2;
+            brighter += d > 2;  // 8-bit round trips of the composite: a level or two
+        }
+        EXPECT_EQ(brighter, 0u) << mode;
+        EXPECT_GT(darker, 400u) << mode << ": AO darkened almost nothing";
+    }
+    // Sky: no ambient light to occlude, so unchanged (the top rows of a view looking up).
+    const obscura::Image skyOff = render("sky_off", "--ssao off", kSkyView);
+    const obscura::Image skyOn = render("sky_on", "--ssao horizon", kSkyView);
+    for (std::size_t i = 0; i < 320 * 20; ++i) ASSERT_NEAR(luma(skyOn, i), luma(skyOff, i), 1) << "sky pixel " << i;
+}
+
+TEST(SsaoRender, AoOnlyViewShowsTheCreasesNotAFlatImage) {
+    for (const std::string mode : {"hemisphere", "horizon", "heightfield"}) {
+        const obscura::Image ao = render(mode + "_ao", "--ssao " + mode + " --ao-only");
+        std::size_t white = 0, dark = 0;
+        for (std::size_t i = 0; i < ao.rgba.size() / 4; ++i) {
+            white += luma(ao, i) > 250;
+            dark += luma(ao, i) < 220;
+        }
+        const std::size_t n = ao.rgba.size() / 4;
+        EXPECT_GT(white, n / 2) << mode << ": open floor and walls are unoccluded";
+        EXPECT_GT(dark, n / 200) << mode << ": the foot of the low wall and the pillars are occluded";
+    }
+}
+
+TEST(SsaoRender, MissingGpuFeatureFallsBackToThePlainViewWithAMessage) {
+    const auto r = game("--ssao horizon --debug-max-render-targets 2 --screenshot " + shot("fallback"));
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_NE(r.out.find("AO mode 'horizon' needs 4 simultaneous render targets and this GPU has 2; AO off"),
+              std::string::npos) << r.out;
+    const obscura::Image fallback = obscura::readPng(shot("fallback"));
+    const obscura::Image off = render("off_for_fallback", "--ssao off");
+    EXPECT_EQ(fallback.rgba, off.rgba);
+}
