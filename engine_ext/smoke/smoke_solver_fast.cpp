@@ -4,8 +4,10 @@
 // same kernel (smoke_kernels.h) as in the reference path; reductions go through per-z-plane
 // partials combined in plane order, so the thread count never changes a bit of the result.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "smoke/smoke_state.h"
 #include "smoke/thread_pool.h"
@@ -22,47 +24,155 @@ void forPlanes(ThreadPool& pool, int k0, int k1, const Fn& fn) {  // planes [k0,
     });
 }
 
+// Row kernels: everything they use arrives by value, so the compiler can keep it in registers
+// (stores to float arrays could otherwise alias a captured float and force reloads that stop
+// the vectoriser). Each processes x in [i0, i1) of one row starting at index `row`.
+struct Fields5 {
+    const float *d, *t, *u, *v, *w;
+};
+struct Out5 {
+    float *d, *t, *u, *v, *w;
+};
+
+// Each field gets its own loops over the row (the row's data stays in L1): one fused loop over
+// all five needs more live vectors than SSE has registers and spills (measured: 1.45x slower).
+template <int W>
+void forwardRow(const float* f, float* hat, const float* u, const float* v, const float* w, Dims d, float s,
+                std::ptrdiff_t row, int i0, int i1) {
+#pragma omp simd
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        float qx, qy, qz;
+        kernels::traceAt<W>(u, v, w, c, d, s, qx, qy, qz);
+        hat[c] = kernels::advectForward(f, d, c, qx, qy, qz);
+    }
+}
+
+// MacCormack in two loops (the unclamped correction into `scratch`, then the clamp), times the
+// dissipation factor, times `keep` (1 for fluid cells, 0 elsewhere) when a class array is given.
+template <int W>
+void correctRow(const float* f, const float* hat, float* out, const float* u, const float* v, const float* w,
+                const std::uint8_t* cls, Dims d, float s, float decay, std::ptrdiff_t row, int i0, int i1, float* scratch) {
+#pragma omp simd
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        float qx, qy, qz;
+        kernels::traceAt<W>(u, v, w, c, d, s, qx, qy, qz);
+        scratch[i] = kernels::macCormack(f, hat, d, c, qx, qy, qz);
+    }
+    if (cls) {
+#pragma omp simd
+        for (int i = i0; i < i1; ++i) {
+            const std::ptrdiff_t c = row + i;
+            float qx, qy, qz;
+            kernels::traceAt<W>(u, v, w, c, d, s, qx, qy, qz);
+            const float keep = kernels::sel(cls[c] == kFluid, 1.f, 0.f);
+            out[c] = kernels::clampToSources(scratch[i], f, d, c, qx, qy, qz) * decay * keep;
+        }
+    } else {
+#pragma omp simd
+        for (int i = i0; i < i1; ++i) {
+            const std::ptrdiff_t c = row + i;
+            float qx, qy, qz;
+            kernels::traceAt<W>(u, v, w, c, d, s, qx, qy, qz);
+            out[c] = kernels::clampToSources(scratch[i], f, d, c, qx, qy, qz) * decay;
+        }
+    }
+}
+
+void advectForwardRow(Fields5 f, Out5 hat, Dims d, float s, std::ptrdiff_t row, int i0, int i1) {
+    using namespace kernels;
+    forwardRow<kAtCell>(f.d, hat.d, f.u, f.v, f.w, d, s, row, i0, i1);
+    forwardRow<kAtCell>(f.t, hat.t, f.u, f.v, f.w, d, s, row, i0, i1);
+    forwardRow<kAtU>(f.u, hat.u, f.u, f.v, f.w, d, s, row, i0, i1);
+    forwardRow<kAtV>(f.v, hat.v, f.u, f.v, f.w, d, s, row, i0, i1);
+    forwardRow<kAtW>(f.w, hat.w, f.u, f.v, f.w, d, s, row, i0, i1);
+}
+
+void advectCorrectRow(Fields5 f, Fields5 hat, Out5 out, const std::uint8_t* cls, Dims d, float s, float decayD,
+                      float decayT, float decayV, std::ptrdiff_t row, int i0, int i1, float* scratch) {
+    using namespace kernels;
+    correctRow<kAtCell>(f.d, hat.d, out.d, f.u, f.v, f.w, cls, d, s, decayD, row, i0, i1, scratch);
+    correctRow<kAtCell>(f.t, hat.t, out.t, f.u, f.v, f.w, cls, d, s, decayT, row, i0, i1, scratch);
+    correctRow<kAtU>(f.u, hat.u, out.u, f.u, f.v, f.w, nullptr, d, s, decayV, row, i0, i1, scratch);
+    correctRow<kAtV>(f.v, hat.v, out.v, f.u, f.v, f.w, nullptr, d, s, decayV, row, i0, i1, scratch);
+    correctRow<kAtW>(f.w, hat.w, out.w, f.u, f.v, f.w, nullptr, d, s, decayV, row, i0, i1, scratch);
+}
+
+void scaleRow(float* f, float factor, std::ptrdiff_t begin, std::ptrdiff_t end) {
+#pragma omp simd
+    for (std::ptrdiff_t c = begin; c < end; ++c) f[c] *= factor;
+}
+
+void curlRow(const float* u, const float* v, const float* w, float* ox, float* oy, float* oz, float* mag, Dims d,
+             float halfInvH, std::ptrdiff_t row, int i0, int i1) {
+#pragma omp simd
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        float x, y, z;
+        kernels::curlAt(u, v, w, c, d, halfInvH, x, y, z);
+        ox[c] = x;
+        oy[c] = y;
+        oz[c] = z;
+        mag[c] = kernels::magnitude(x, y, z);
+    }
+}
+
+void confinementRow(float* ox, float* oy, float* oz, const float* mag, Dims d, float halfInvH, float epsH,
+                    std::ptrdiff_t row, int i0, int i1) {
+#pragma omp simd
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        float fx, fy, fz;
+        kernels::confinementAt(mag, c, d, halfInvH, epsH, ox[c], oy[c], oz[c], fx, fy, fz);
+        ox[c] = fx;
+        oy[c] = fy;
+        oz[c] = fz;
+    }
+}
+
+struct Masks3 {
+    const std::uint8_t *u, *v, *w;
+};
+
+void forcesRow(float* u, float* v, float* w, const float* ox, const float* oy, const float* oz, const float* T,
+               const float* D, Masks3 m, Dims d, float dt, float buoy, float weight, float vmax, std::ptrdiff_t row, int i0,
+               int i1) {
+    const std::uint8_t *mu = m.u, *mv = m.v, *mw = m.w;
+#pragma omp simd
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i, b = c - d.sy;
+        const float fu = kernels::forcedFace(u[c], ox[c - 1], ox[c], dt, vmax);
+        const float fv = kernels::forcedFace(v[c], kernels::cellLift(oy[b], T[b], D[b], buoy, weight),
+                                             kernels::cellLift(oy[c], T[c], D[c], buoy, weight), dt, vmax);
+        const float fw = kernels::forcedFace(w[c], oz[c - d.sz], oz[c], dt, vmax);
+        u[c] = kernels::sel(mu[c] != 0, fu, 0.f);
+        v[c] = kernels::sel(mv[c] != 0, fv, 0.f);
+        w[c] = kernels::sel(mw[c] != 0, fw, 0.f);
+    }
+}
+
 void advect(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt, float decayD, float decayT, float decayV) {
     const Dims d = s.dims;
     const float scale = dt / static_cast<float>(s.grid.cellSize);
-    const float* F[5] = {s.density.data(), s.temperature.data(), s.u.data(), s.v.data(), s.w.data()};
-    float* H[5] = {s.hat[0].data(), s.hat[1].data(), s.hat[2].data(), s.hat[3].data(), s.hat[4].data()};
-    float* N[5] = {s.next[0].data(), s.next[1].data(), s.next[2].data(), s.next[3].data(), s.next[4].data()};
-    const float *u = F[2], *v = F[3], *w = F[4];
+    const Fields5 f{s.density.data(), s.temperature.data(), s.u.data(), s.v.data(), s.w.data()};
+    const Out5 hat{s.hat[0].data(), s.hat[1].data(), s.hat[2].data(), s.hat[3].data(), s.hat[4].data()};
+    const Fields5 hatIn{hat.d, hat.t, hat.u, hat.v, hat.w};
+    const Out5 out{s.next[0].data(), s.next[1].data(), s.next[2].data(), s.next[3].data(), s.next[4].data()};
     const std::uint8_t* cls = s.cellClass.data();
 
     const double outflow = st.conserveMass ? borderOutflow(s, dt) : 0.0;
     // Pass 1: semi-Lagrangian forward step of all five fields (+ this plane's density total).
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
         s.planeSum[static_cast<std::size_t>(k)] = planeDensity(s.density, d, k);
-        for (int j = 1; j < d.ny - 1; ++j) {
-            const std::ptrdiff_t row = d.sy * j + d.sz * k;
-            for (int i = 1; i < d.nx - 1; ++i) {
-                const std::ptrdiff_t c = row + i;
-                const kernels::Disp qc = kernels::dispAtCell(u, v, w, c, d, scale);
-                H[0][c] = kernels::advectForward(F[0], d, i, j, k, qc);
-                H[1][c] = kernels::advectForward(F[1], d, i, j, k, qc);
-                H[2][c] = kernels::advectForward(F[2], d, i, j, k, kernels::dispAtU(u, v, w, c, d, scale));
-                H[3][c] = kernels::advectForward(F[3], d, i, j, k, kernels::dispAtV(u, v, w, c, d, scale));
-                H[4][c] = kernels::advectForward(F[4], d, i, j, k, kernels::dispAtW(u, v, w, c, d, scale));
-            }
-        }
+        for (int j = 1; j < d.ny - 1; ++j) advectForwardRow(f, hat, d, scale, d.sy * j + d.sz * k, 1, d.nx - 1);
     });
     // Pass 2: MacCormack correction + clamp, dissipation, no smoke in solid cells.
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
-        for (int j = 1; j < d.ny - 1; ++j) {
-            const std::ptrdiff_t row = d.sy * j + d.sz * k;
-            for (int i = 1; i < d.nx - 1; ++i) {
-                const std::ptrdiff_t c = row + i;
-                const float fluid = cls[c] == kFluid ? 1.f : 0.f;
-                const kernels::Disp qc = kernels::dispAtCell(u, v, w, c, d, scale);
-                N[0][c] = kernels::advectCorrect(F[0], H[0], d, c, i, j, k, qc) * decayD * fluid;
-                N[1][c] = kernels::advectCorrect(F[1], H[1], d, c, i, j, k, qc) * decayT * fluid;
-                N[2][c] = kernels::advectCorrect(F[2], H[2], d, c, i, j, k, kernels::dispAtU(u, v, w, c, d, scale)) * decayV;
-                N[3][c] = kernels::advectCorrect(F[3], H[3], d, c, i, j, k, kernels::dispAtV(u, v, w, c, d, scale)) * decayV;
-                N[4][c] = kernels::advectCorrect(F[4], H[4], d, c, i, j, k, kernels::dispAtW(u, v, w, c, d, scale)) * decayV;
-            }
-        }
+        std::vector<float> scratch(static_cast<std::size_t>(d.nx));  // one row, per plane task
+        for (int j = 1; j < d.ny - 1; ++j)
+            advectCorrectRow(f, hatIn, out, cls, d, scale, decayD, decayT, decayV, d.sy * j + d.sz * k, 1, d.nx - 1,
+                             scratch.data());
         s.planeSumAfter[static_cast<std::size_t>(k)] = planeDensity(s.next[0], d, k);
     });
     double before = 0, after = 0;
@@ -70,10 +180,7 @@ void advect(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt, 
     for (int k = 1; k < d.nz - 1; ++k) after += s.planeSumAfter[static_cast<std::size_t>(k)];
     const float massFactor = massScale(st, before, outflow, after, decayD);
     if (massFactor != 1.f)
-        forPlanes(pool, 1, d.nz - 1, [&](int k) {
-            float* row = N[0] + d.sz * k;
-            for (std::ptrdiff_t c = d.sy; c < d.sz - d.sy; ++c) row[c] *= massFactor;
-        });
+        forPlanes(pool, 1, d.nz - 1, [&](int k) { scaleRow(out.d, massFactor, d.sz * k + d.sy, d.sz * (k + 1) - d.sy); });
     std::swap(s.density, s.next[0]);
     std::swap(s.temperature, s.next[1]);
     std::swap(s.u, s.next[2]);
@@ -89,45 +196,76 @@ void forces(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt) 
     float *u = s.u.data(), *v = s.v.data(), *w = s.w.data();
     if (st.vorticity != 0) {
         forPlanes(pool, 2, d.nz - 2, [&](int k) {
-            for (int j = 2; j < d.ny - 2; ++j) {
-                const std::ptrdiff_t row = d.sy * j + d.sz * k;
-                for (int i = 2; i < d.nx - 2; ++i) {
-                    const std::ptrdiff_t c = row + i;
-                    kernels::curlAt(u, v, w, c, d, halfInvH, ox[c], oy[c], oz[c]);
-                    mag[c] = kernels::magnitude(ox[c], oy[c], oz[c]);
-                }
-            }
+            for (int j = 2; j < d.ny - 2; ++j) curlRow(u, v, w, ox, oy, oz, mag, d, halfInvH, d.sy * j + d.sz * k, 2, d.nx - 2);
         });
         // The force overwrites omega in place: each cell reads only its own omega and |omega| around.
         forPlanes(pool, 2, d.nz - 2, [&](int k) {
-            for (int j = 2; j < d.ny - 2; ++j) {
-                const std::ptrdiff_t row = d.sy * j + d.sz * k;
-                for (int i = 2; i < d.nx - 2; ++i) {
-                    const std::ptrdiff_t c = row + i;
-                    kernels::confinementAt(mag, c, d, halfInvH, epsH, ox[c], oy[c], oz[c], ox[c], oy[c], oz[c]);
-                }
-            }
+            for (int j = 2; j < d.ny - 2; ++j) confinementRow(ox, oy, oz, mag, d, halfInvH, epsH, d.sy * j + d.sz * k, 2, d.nx - 2);
         });
     }
     const float buoy = static_cast<float>(st.buoyancy), weight = static_cast<float>(st.densityWeight);
     const float vmax = static_cast<float>(st.maxSpeed);
+    const Masks3 m{s.faceMask[0].data(), s.faceMask[1].data(), s.faceMask[2].data()};
     const float *T = s.temperature.data(), *D = s.density.data();
-    const std::uint8_t *mu = s.faceMask[0].data(), *mv = s.faceMask[1].data(), *mw = s.faceMask[2].data();
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
-        for (int j = 1; j < d.ny - 1; ++j) {
-            const std::ptrdiff_t row = d.sy * j + d.sz * k;
-            for (int i = 1; i < d.nx - 1; ++i) {
-                const std::ptrdiff_t c = row + i, b = c - d.sy;
-                const float fu = kernels::forcedFace(u[c], ox[c - 1], ox[c], dt, vmax);
-                const float fv = kernels::forcedFace(v[c], kernels::cellLift(oy[b], T[b], D[b], buoy, weight),
-                                                     kernels::cellLift(oy[c], T[c], D[c], buoy, weight), dt, vmax);
-                const float fw = kernels::forcedFace(w[c], oz[c - d.sz], oz[c], dt, vmax);
-                u[c] = mu[c] ? fu : 0.f;
-                v[c] = mv[c] ? fv : 0.f;
-                w[c] = mw[c] ? fw : 0.f;
-            }
-        }
+        for (int j = 1; j < d.ny - 1; ++j)
+            forcesRow(u, v, w, ox, oy, oz, T, D, m, d, dt, buoy, weight, vmax, d.sy * j + d.sz * k, 1, d.nx - 1);
     });
+}
+
+float divergenceRow(const float* u, const float* v, const float* w, const float* src, const std::uint8_t* cls, float* rhs,
+                    Dims d, float invH, float h2, float emitFactor, std::ptrdiff_t row, int i0, int i1) {
+    float maxDiv = 0.f;
+#pragma omp simd reduction(max : maxDiv)
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        const float div = kernels::divergenceAt(u, v, w, c, d, invH);
+        const bool fluid = cls[c] == kFluid;
+        const float source = src[c] * emitFactor;
+        maxDiv = std::max(maxDiv, kernels::sel(fluid, kernels::absf(div - source), 0.f));
+        rhs[c] = kernels::sel(fluid, kernels::pressureRhs(div, source, h2), 0.f);
+    }
+    return maxDiv;
+}
+
+// One colour of red-black Gauss-Seidel on a row: cells i0, i0 + 2, ... (in place: a cell of one
+// colour reads only cells of the other, so the order within a colour cannot matter).
+void gaussSeidelRow(float* p, const float* rhs, const float* dinv, Dims d, std::ptrdiff_t row, int i0, int i1) {
+#pragma omp simd
+    for (int i = i0; i < i1; i += 2) {
+        const std::ptrdiff_t c = row + i;
+        p[c] = kernels::pressureUpdate(kernels::neighbourSum(p, c, d), rhs[c], dinv[c]);
+    }
+}
+
+void jacobiRow(const float* p, float* q, const float* rhs, const float* dinv, Dims d, std::ptrdiff_t row, int i0, int i1) {
+#pragma omp simd
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        q[c] = kernels::pressureUpdate(kernels::neighbourSum(p, c, d), rhs[c], dinv[c]);
+    }
+}
+
+float gradientRow(float* u, float* v, float* w, const float* p, const float* rhs, const float* dinv, Masks3 m, Dims d,
+                  float invH, float invH2, std::ptrdiff_t row, int i0, int i1) {
+    const std::uint8_t *mu = m.u, *mv = m.v, *mw = m.w;
+    float maxRes = 0.f;
+#pragma omp simd reduction(max : maxRes)
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        const float pu = kernels::projectedFace(u[c], p[c], p[c - 1], invH);
+        const float pv = kernels::projectedFace(v[c], p[c], p[c - d.sy], invH);
+        const float pw = kernels::projectedFace(w[c], p[c], p[c - d.sz], invH);
+        u[c] = kernels::sel(mu[c] != 0, pu, 0.f);
+        v[c] = kernels::sel(mv[c] != 0, pv, 0.f);
+        w[c] = kernels::sel(mw[c] != 0, pw, 0.f);
+        // What the projection leaves: (sum p_nb + rhs - n p) / h^2 (fluid cells: dinv > 0).
+        const bool fluid = dinv[c] > 0.f;
+        const float n = 1.f / kernels::sel(fluid, dinv[c], 1.f);
+        const float r = kernels::absf(kernels::neighbourSum(p, c, d) + rhs[c] - p[c] * n) * invH2;
+        maxRes = std::max(maxRes, kernels::sel(fluid, r, 0.f));
+    }
+    return maxRes;
 }
 
 void project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emitFactor) {
@@ -136,21 +274,11 @@ void project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emi
     const float *u = s.u.data(), *v = s.v.data(), *w = s.w.data(), *src = s.source.data(), *dinv = s.diagInv.data();
     const std::uint8_t* cls = s.cellClass.data();
     float* rhs = s.rhs.data();
-    float* planeA = s.planeA.data();
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
         float maxDiv = 0.f;
-        for (int j = 1; j < d.ny - 1; ++j) {
-            const std::ptrdiff_t row = d.sy * j + d.sz * k;
-            for (int i = 1; i < d.nx - 1; ++i) {
-                const std::ptrdiff_t c = row + i;
-                const float div = kernels::divergenceAt(u, v, w, c, d, invH);
-                const bool fluid = cls[c] == kFluid;
-                const float a = fluid ? std::fabs(div - src[c] * emitFactor) : 0.f;
-                maxDiv = a > maxDiv ? a : maxDiv;
-                rhs[c] = fluid ? kernels::pressureRhs(div, src[c] * emitFactor, h2) : 0.f;
-            }
-        }
-        planeA[k] = maxDiv;
+        for (int j = 1; j < d.ny - 1; ++j)
+            maxDiv = std::max(maxDiv, divergenceRow(u, v, w, src, cls, rhs, d, invH, h2, emitFactor, d.sy * j + d.sz * k, 1, d.nx - 1));
+        s.planeA[static_cast<std::size_t>(k)] = maxDiv;
     });
 
     const int iterations = std::max(0, st.pressureIterations);
@@ -159,26 +287,15 @@ void project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emi
         for (int it = 0; it < iterations; ++it)
             for (int colour = 0; colour < 2; ++colour)
                 forPlanes(pool, 1, d.nz - 1, [&](int k) {
-                    for (int j = 1; j < d.ny - 1; ++j) {
-                        const std::ptrdiff_t row = d.sy * j + d.sz * k;
-                        for (int i = 1 + ((1 + j + k + colour) & 1); i < d.nx - 1; i += 2) {
-                            const std::ptrdiff_t c = row + i;
-                            p[c] = kernels::pressureUpdate(kernels::neighbourSum(p, c, d), rhs[c], dinv[c]);
-                        }
-                    }
+                    for (int j = 1; j < d.ny - 1; ++j)
+                        gaussSeidelRow(p, rhs, dinv, d, d.sy * j + d.sz * k, 1 + ((1 + j + k + colour) & 1), d.nx - 1);
                 });
     } else {
         for (int it = 0; it < iterations; ++it) {
             const float* p = s.pressure.data();
             float* q = s.pressureTmp.data();
             forPlanes(pool, 1, d.nz - 1, [&](int k) {
-                for (int j = 1; j < d.ny - 1; ++j) {
-                    const std::ptrdiff_t row = d.sy * j + d.sz * k;
-                    for (int i = 1; i < d.nx - 1; ++i) {
-                        const std::ptrdiff_t c = row + i;
-                        q[c] = kernels::pressureUpdate(kernels::neighbourSum(p, c, d), rhs[c], dinv[c]);
-                    }
-                }
+                for (int j = 1; j < d.ny - 1; ++j) jacobiRow(p, q, rhs, dinv, d, d.sy * j + d.sz * k, 1, d.nx - 1);
             });
             std::swap(s.pressure, s.pressureTmp);
         }
@@ -190,27 +307,12 @@ void subtractGradient(SmokeState& s, ThreadPool& pool) {
     const float h = static_cast<float>(s.grid.cellSize), invH = 1.f / h, invH2 = 1.f / (h * h);
     float *u = s.u.data(), *v = s.v.data(), *w = s.w.data();
     const float *p = s.pressure.data(), *rhs = s.rhs.data(), *dinv = s.diagInv.data();
-    const std::uint8_t *mu = s.faceMask[0].data(), *mv = s.faceMask[1].data(), *mw = s.faceMask[2].data();
-    float* planeB = s.planeB.data();
+    const Masks3 m{s.faceMask[0].data(), s.faceMask[1].data(), s.faceMask[2].data()};
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
         float maxRes = 0.f;
-        for (int j = 1; j < d.ny - 1; ++j) {
-            const std::ptrdiff_t row = d.sy * j + d.sz * k;
-            for (int i = 1; i < d.nx - 1; ++i) {
-                const std::ptrdiff_t c = row + i;
-                const float pu = kernels::projectedFace(u[c], p[c], p[c - 1], invH);
-                const float pv = kernels::projectedFace(v[c], p[c], p[c - d.sy], invH);
-                const float pw = kernels::projectedFace(w[c], p[c], p[c - d.sz], invH);
-                u[c] = mu[c] ? pu : 0.f;
-                v[c] = mv[c] ? pv : 0.f;
-                w[c] = mw[c] ? pw : 0.f;
-                if (dinv[c] > 0.f) {  // what the projection leaves: (sum p_nb + rhs - n p) / h^2
-                    const float r = std::fabs(kernels::neighbourSum(p, c, d) + rhs[c] - p[c] / dinv[c]) * invH2;
-                    maxRes = r > maxRes ? r : maxRes;
-                }
-            }
-        }
-        planeB[k] = maxRes;
+        for (int j = 1; j < d.ny - 1; ++j)
+            maxRes = std::max(maxRes, gradientRow(u, v, w, p, rhs, dinv, m, d, invH, invH2, d.sy * j + d.sz * k, 1, d.nx - 1));
+        s.planeB[static_cast<std::size_t>(k)] = maxRes;
     });
 }
 
@@ -219,20 +321,31 @@ void subtractGradient(SmokeState& s, ThreadPool& pool) {
 void projectBorderFaces(SmokeState& s);  // smoke_solver_reference.cpp (shared, O(n^2))
 
 void substepFast(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt) {
+    using Clock = std::chrono::steady_clock;
+    auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    const auto t0 = Clock::now();
     applyEmitter(s, st, dt);
     const float decayD = densityDecay(s, st, dt);
     const float decayT = static_cast<float>(std::exp(-st.temperatureDissipation * dt));
     const float decayV = static_cast<float>(std::exp(-st.velocityDissipation * dt));
     advect(s, st, pool, dt, decayD, decayT, decayV);
     setBorderFaces(s);  // the curl reads the border faces: give them this step's values
+    const auto t1 = Clock::now();
     forces(s, st, pool, dt);
     setBorderFaces(s);
     patchDynamicFaces(s);
+    const auto t2 = Clock::now();
     const float emitFactor = s.age < st.emitTime ? 1.f : 0.f;
     project(s, st, pool, emitFactor);
+    const auto t3 = Clock::now();
     subtractGradient(s, pool);
     projectBorderFaces(s);
     patchDynamicFaces(s);
+    const auto t4 = Clock::now();
+    s.stats.msAdvect += ms(t0, t1);
+    s.stats.msForces += ms(t1, t2);
+    s.stats.msPressure += ms(t2, t3);
+    s.stats.msProject += ms(t3, t4);
     float before = 0, after = 0;
     for (int k = 1; k < s.grid.nz - 1; ++k) {
         before = std::max(before, s.planeA[static_cast<std::size_t>(k)]);

@@ -31,23 +31,30 @@ void advectReference(SmokeState& s, const SmokeSettings& st, float dt, float dec
     const std::vector<float> u0 = s.u, v0 = s.v, w0 = s.w;  // the velocity every trace uses
     const float *u = u0.data(), *v = v0.data(), *w = w0.data();
     enum Where { Cell, UFace, VFace, WFace };
+    struct Trace {
+        float x, y, z;
+    };
     auto disp = [&](Where where, std::ptrdiff_t c) {
+        Trace t{};
         switch (where) {
-            case UFace: return kernels::dispAtU(u, v, w, c, d, scale);
-            case VFace: return kernels::dispAtV(u, v, w, c, d, scale);
-            case WFace: return kernels::dispAtW(u, v, w, c, d, scale);
-            default: return kernels::dispAtCell(u, v, w, c, d, scale);
+            case UFace: kernels::traceAt<kernels::kAtU>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
+            case VFace: kernels::traceAt<kernels::kAtV>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
+            case WFace: kernels::traceAt<kernels::kAtW>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
+            default: kernels::traceAt<kernels::kAtCell>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
         }
+        return t;
     };
     auto advectField = [&](std::vector<float>& field, Where where, float decay, bool scalar) {
         std::vector<float> hat(field.size(), 0.f), out(field.size(), 0.f);
-        forInterior(d, 1, [&](int i, int j, int k, std::ptrdiff_t c) {
-            hat[static_cast<std::size_t>(c)] = kernels::advectForward(field.data(), d, i, j, k, disp(where, c));
+        forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) {
+            const Trace q = disp(where, c);
+            hat[static_cast<std::size_t>(c)] = kernels::advectForward(field.data(), d, c, q.x, q.y, q.z);
         });
-        forInterior(d, 1, [&](int i, int j, int k, std::ptrdiff_t c) {
+        forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) {
             const std::size_t n = static_cast<std::size_t>(c);
             if (scalar && s.cellClass[n] != kFluid) return;  // no smoke in solids
-            out[n] = kernels::advectCorrect(field.data(), hat.data(), d, c, i, j, k, disp(where, c)) * decay;
+            const Trace q = disp(where, c);
+            out[n] = kernels::advectCorrect(field.data(), hat.data(), d, c, q.x, q.y, q.z) * decay;
         });
         // Cells outside the interior keep what the optimised path keeps there.
         for (std::size_t n = 0; n < field.size(); ++n) {

@@ -88,6 +88,7 @@ void SmokeVolume::advance(double dt, bool reference) {
     const double cells = vmax * dt / (m.settings.cellSize * std::max(1e-3, m.settings.maxCfl));
     const int substeps = std::clamp(static_cast<int>(std::ceil(cells)), 1, m.settings.maxSubsteps);
     const float sub = static_cast<float>(dt / substeps);
+    s.stats.msAdvect = s.stats.msForces = s.stats.msPressure = s.stats.msProject = 0;
     for (int n = 0; n < substeps; ++n) {
         if (reference) substepReference(s, m.settings, sub);
         else substepFast(s, m.settings, *m.pool, sub);

@@ -104,6 +104,7 @@ map::Level hall() {
 
 struct Timing {
     double msPerStep = 0, residual = 0, divergenceBefore = 0;
+    double advect = 0, forces = 0, pressure = 0, project = 0;  // ms per step per phase (optimised path)
     int iterations = 0;
 };
 
@@ -117,6 +118,10 @@ Timing timeSteps(SmokeVolume& vol, int warmup, int steps, bool reference) {
         else vol.step(1.0 / 30);
         t.residual += vol.stats().residual / steps;
         t.divergenceBefore += vol.stats().divergenceBefore / steps;
+        t.advect += vol.stats().msAdvect / steps;
+        t.forces += vol.stats().msForces / steps;
+        t.pressure += vol.stats().msPressure / steps;
+        t.project += vol.stats().msProject / steps;
     }
     t.msPerStep = 1e3 * seconds(t0, Clock::now()) / steps;
     t.iterations = vol.stats().pressureIterations * vol.stats().substeps;
@@ -165,6 +170,9 @@ int main(int argc, char** argv) {
         const char* name = reference ? "reference" : solver == PressureSolver::Jacobi ? "Jacobi" : "RBGS";
         std::printf("%3d^3  %-10s %6d %10.4f %10.5f %9.2f %9.1f %9.2f %7.2f\n", n, name, t.iterations, t.divergenceBefore,
                     t.residual, t.msPerStep, bytes / 1e6, boundMs, t.msPerStep / boundMs);
+        if (!reference)
+            std::printf("       phases: advect %.2f ms, forces %.2f ms, pressure %.2f ms, projection %.2f ms\n", t.advect,
+                        t.forces, t.pressure, t.project);
         std::fflush(stdout);
         const std::string key = std::string(reference ? "ref" : solver == PressureSolver::Jacobi ? "jacobi" : "rbgs") +
                                 std::to_string(n);
