@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Builds obscura_smokebench in a Release build dir (build-release-smoke/) and runs it; the output
+# is also written to bench/results/smoke_<UTC date-time>.txt (bench/results is git-ignored).
+# Usage: bench/run_smoke_bench.sh [--threads N] [--quick]
+# The machine's other load skews the figures: run it on an idle machine and compare ratios.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=build-release-smoke
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --target obscura_smokebench -j"$(nproc)" >/dev/null
+mkdir -p bench/results
+out="bench/results/smoke_$(date -u +%Y%m%d_%H%M%S).txt"
+{
+  echo "# $(date -u '+%Y-%m-%d %H:%M:%S UTC'), $(git rev-parse --short HEAD 2>/dev/null || echo '?'), $(nproc) cores: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+  echo "# load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)"
+  "$build/tools/smokebench/obscura_smokebench" "$@"
+} | tee "$out"
+echo "results: $out"
