@@ -14,6 +14,7 @@ struct SmokeVolume::Impl {
     SmokeState state;
     std::shared_ptr<ThreadPool> pool;
     std::vector<float> transmittance;  // 1 until computeTransmittance()
+    std::vector<float> opticalDepth;   // scratch of computeTransmittance()
 };
 
 }  // namespace obscura::smoke

@@ -1,5 +1,6 @@
 // SmokeVolume's read side: accessors, sampling, transmittance, texture export, validation.
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <sstream>
 
@@ -78,6 +79,27 @@ double SmokeVolume::maxDivergence() const {
     return worst;
 }
 
+namespace {
+
+// exp(-x) for x >= 0 without libm: 2^(-x log2 e) as 2^k (exponent bits) times a degree-6
+// Taylor polynomial of 2^f on [0, 1): relative error < 2e-5, far below the 8-bit texture's
+// step; plain float operations, so it vectorises and gives the same bits everywhere.
+float expNeg(float x) {
+    x = kernels::clampf(x, 0.f, 87.f);  // e^-87 ~ 1.6e-38: the smallest normal float
+    const float y = -x * 1.44269504f;    // log2(e)
+    int k = static_cast<int>(y);         // trunc toward 0; y <= 0 so floor is k or k - 1
+    k -= static_cast<float>(k) > y ? 1 : 0;
+    const float f = y - static_cast<float>(k);  // [0, 1)
+    const float t = f * 0.693147181f;           // ln 2
+    const float p = 1.f + t * (1.f + t * (0.5f + t * (0.166666667f + t * (0.0416666667f + t * (0.00833333333f + t * 0.00138888889f)))));
+    const std::uint32_t bits = static_cast<std::uint32_t>(k + 127) << 23;
+    float scale;
+    std::memcpy(&scale, &bits, 4);
+    return p * scale;
+}
+
+}  // namespace
+
 void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
     const SmokeState& s = impl_->state;
     std::vector<float>& T = impl_->transmittance;
@@ -86,7 +108,10 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
         std::fill(T.begin(), T.end(), 1.f);
         return;
     }
-    // Sweep along the dominant axis a, starting at the light's side.
+    // Optical depth swept slice by slice along the dominant axis a, from the light's side: each
+    // cell adds half its own density and half the density one slice toward the light (bilinear
+    // at the light direction's constant offset) to that point's depth. Cells of one slice are
+    // independent: the slice's rows go to the thread pool.
     const double comp[3] = {L.x, L.y, L.z};
     int a = 0;
     for (int x = 1; x < 3; ++x)
@@ -95,42 +120,40 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
     const int n[3] = {s.grid.nx, s.grid.ny, s.grid.nz};
     const std::ptrdiff_t stride[3] = {1, s.dims.sy, s.dims.sz};
     const int dirA = comp[a] > 0 ? 1 : -1;  // the previous slice (toward the light) is at +dirA
-    const float ob = static_cast<float>(comp[b] / std::fabs(comp[a])), oc = static_cast<float>(comp[c] / std::fabs(comp[a]));
-    const float stepLen = static_cast<float>(s.grid.cellSize / std::fabs(comp[a]));  // metres per slice
-    const float sigma = static_cast<float>(impl_->settings.shadowSigma);
-    std::vector<float> tau(static_cast<std::size_t>(n[b]) * n[c], 0.f), prevTau(tau.size(), 0.f),
-        prevDen(tau.size(), 0.f);
-    auto bilinear = [&](const std::vector<float>& f, float x, float y) {
-        x = kernels::clampf(x, 0.f, static_cast<float>(n[b] - 1));
-        y = kernels::clampf(y, 0.f, static_cast<float>(n[c] - 1));
-        const int x0 = std::min(static_cast<int>(x), n[b] - 2), y0 = std::min(static_cast<int>(y), n[c] - 2);
-        const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
-        const std::size_t r0 = static_cast<std::size_t>(y0) * n[b] + x0, r1 = r0 + static_cast<std::size_t>(n[b]);
-        return kernels::lerp(kernels::lerp(f[r0], f[r0 + 1], fx), kernels::lerp(f[r1], f[r1 + 1], fx), fy);
+    const double ob = comp[b] / std::fabs(comp[a]), oc = comp[c] / std::fabs(comp[a]);  // in [-1, 1]
+    const int ib = static_cast<int>(std::floor(ob)), ic = static_cast<int>(std::floor(oc));
+    const float fb = static_cast<float>(ob - ib), fc = static_cast<float>(oc - ic);
+    const float halfStep = static_cast<float>(impl_->settings.shadowSigma * s.grid.cellSize / std::fabs(comp[a])) * 0.5f;
+    std::vector<float>& tau = impl_->opticalDepth;
+    tau.assign(s.grid.cells(), 0.f);
+    const float* den = s.density.data();
+    auto at = [&](int sa, int xb, int yc) {
+        return static_cast<std::size_t>(sa * stride[a] + xb * stride[b] + yc * stride[c]);
     };
     const int first = dirA > 0 ? n[a] - 1 : 0;
-    for (int step = 0; step < n[a]; ++step) {
-        const int sa = first - dirA * step;
-        for (int yc = 0; yc < n[c]; ++yc)
-            for (int xb = 0; xb < n[b]; ++xb) {
-                const std::size_t cell = static_cast<std::size_t>(sa * stride[a] + xb * stride[b] + yc * stride[c]);
-                const std::size_t slot = static_cast<std::size_t>(yc) * n[b] + xb;
-                const float den = s.density[cell];
-                float t = 0.f;
-                if (step > 0) {  // half of this cell's density and half of the sample toward the light
-                    const float px = static_cast<float>(xb) + ob, py = static_cast<float>(yc) + oc;
-                    t = bilinear(prevTau, px, py) + sigma * stepLen * 0.5f * (den + bilinear(prevDen, px, py));
+    for (int step = 1; step < n[a]; ++step) {
+        const int sa = first - dirA * step, prev = sa + dirA;
+        impl_->pool->parallelFor(n[c], [&](int y0, int y1) {
+            for (int yc = y0; yc < y1; ++yc) {
+                const int c0 = std::clamp(yc + ic, 0, n[c] - 1), c1 = std::clamp(yc + ic + 1, 0, n[c] - 1);
+                for (int xb = 0; xb < n[b]; ++xb) {
+                    const int b0 = std::clamp(xb + ib, 0, n[b] - 1), b1 = std::clamp(xb + ib + 1, 0, n[b] - 1);
+                    const std::size_t p00 = at(prev, b0, c0), p10 = at(prev, b1, c0), p01 = at(prev, b0, c1),
+                                      p11 = at(prev, b1, c1);
+                    auto bilinear = [&](const float* f) {
+                        return kernels::lerp(kernels::lerp(f[p00], f[p10], fb), kernels::lerp(f[p01], f[p11], fb), fc);
+                    };
+                    const std::size_t cell = at(sa, xb, yc);
+                    tau[cell] = bilinear(tau.data()) + halfStep * (den[cell] + bilinear(den));
                 }
-                tau[slot] = t;
-                T[cell] = std::exp(-t);
             }
-        // This slice becomes the previous one.
-        std::swap(prevTau, tau);
-        for (int yc = 0; yc < n[c]; ++yc)
-            for (int xb = 0; xb < n[b]; ++xb)
-                prevDen[static_cast<std::size_t>(yc) * n[b] + xb] =
-                    s.density[static_cast<std::size_t>(sa * stride[a] + xb * stride[b] + yc * stride[c])];
+        });
     }
+    const std::size_t cells = s.grid.cells();
+    impl_->pool->parallelFor(64, [&](int c0, int c1) {
+        const std::size_t e = cells * static_cast<std::size_t>(c1) / 64;
+        for (std::size_t i = cells * static_cast<std::size_t>(c0) / 64; i < e; ++i) T[i] = expNeg(tau[i]);
+    });
 }
 
 void SmokeVolume::exportRG8(std::vector<std::uint8_t>& out) const {
