@@ -34,19 +34,24 @@ struct SmokeSettings {
     // floor does not sit half in it).
     double emitterRadius = 0.5;      // metres: the canister's plume at 2 cells wide
     double emitterLift = 0.3;        // metres above the detonation point
-    double emitDensity = 6.0;        // density units per second inside the sphere (1 = opaque-ish)
-    double emitTemperature = 8.0;    // kelvin above ambient: enough lift for a rising, rolling top
-    double emitExpansion = 1.5;      // 1/s volume source in the sphere: the canister pushes gas out,
-                                     // which spreads the cloud along the floor like the real thing
+    double emitDensity = 30.0;       // density units per second inside the sphere; the outflow
+                                     // below dilutes it to ~2 at the canister, ~0.8 in the cloud
+    double emitTemperature = 3.0;    // kelvin above ambient: a gentle rise, the cloud still hugs
+                                     // the floor as a dome instead of shooting to the ceiling
+    double emitExpansion = 20.0;     // 1/s volume source in the sphere (~10 m^3/s of gas): the
+                                     // canister pushes the cloud out to a ~3.5 m radius dome
+                                     // (measured in a 40 x 4 x 40 m hall: 43 m^3 above density 0.1
+                                     // after 9 s, like a CS smoke); faces near it run at ~4 m/s
     Vec3 emitVelocity{0, 0, 0};      // m/s added inside the sphere each step (e.g. a jet direction)
 
     // Forces. buoyancy (Fedkiw et al. 2001): a = (buoyancy * T - densityWeight * density) up.
-    double buoyancy = 0.35;          // m/s^2 per kelvin: hot smoke rises ~1 m/s within a second
+    double buoyancy = 0.12;          // m/s^2 per kelvin: with emitTemperature the plume lifts at
+                                     // ~0.36 m/s^2, enough to roll, not to pool under the ceiling
     double densityWeight = 0.08;     // m/s^2 per density unit: cooled smoke settles slowly
     double vorticity = 0.35;         // confinement epsilon (dimensionless, x cell size): keeps
                                      // billows alive at 25 cm cells without visible noise
     double maxSpeed = 20.0;          // m/s velocity clamp: a guard against blow-ups, never reached
-                                     // in normal play (the emitter pushes ~1-2 m/s)
+                                     // in normal play (the emitter pushes ~4 m/s)
 
     // Dissipation, per second (exponential).
     double densityDissipation = 0.02;     // smoke thins slowly while the grenade lasts
