@@ -222,6 +222,8 @@ TEST(SmokeVoxel, LibreQuakeE3m4NonAxisAlignedBrushes) {
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
     const map::Level level = map::loadLevel(path.string());
     ASSERT_TRUE(level.hasPlayerStart);
+    // The player start, 30 cm up: a ~3.75 m wide passage running along -z (8 free cells on
+    // either side in x, 32 toward -z), with sloped and angled brushes around it.
     const Vec3 centre = level.playerStart + Vec3{0, 0.3, 0};
     SmokeSettings st = testlevels::small(48);
     SmokeVolume vol = SmokeVolume::create(level, {}, centre, st);
