@@ -71,6 +71,35 @@ double parseClamped(const std::string& v, double lo, double hi, const std::strin
 
 }  // namespace
 
+std::string defaultConfigPath() {
+    const char* xdg = std::getenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    const std::string base = xdg && *xdg ? xdg : std::string(home && *home ? home : "/tmp") + "/.config";
+    return base + "/obscura/obscura.cfg";
+}
+
+std::string updateConfigText(const std::string& text, const std::vector<std::pair<std::string, std::string>>& values) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    for (const auto& [key, value] : values) {
+        const std::string entry = key + " = " + value;
+        long found = -1;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            std::string l = lines[i];
+            const auto hash = l.find('#');
+            if (hash != std::string::npos) l.resize(hash);
+            const auto eq = l.find('=');
+            if (eq != std::string::npos && trim(l.substr(0, eq)) == key) found = static_cast<long>(i);
+        }
+        if (found >= 0) lines[static_cast<std::size_t>(found)] = entry;
+        else lines.push_back(entry);
+    }
+    std::string out;
+    for (const auto& l : lines) out += l + "\n";
+    return out;
+}
+
 const char* actionName(Action a) { return kActionNames[static_cast<int>(a)]; }
 
 std::optional<Action> actionFromName(const std::string& name) {
@@ -168,11 +197,14 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     // Radius 0.05..5 m: below, AO is sub-pixel at play distance; above, it darkens whole rooms.
     I.add({"ssao-radius", "AO radius in metres", num(&S::ssaoRadius, "ssao-radius", 0.05, 5)});
     I.add({"ssao-intensity", "AO strength", num(&S::ssaoIntensity, "ssao-intensity", 0, 4)});
-    I.add({"ssao-resolution", "AO buffer resolution: half or full", [](S& s, W v, W where) {
-               if (v != "half" && v != "full") fail(where, "ssao-resolution", "'" + v + "', expected half or full");
-               s.ssaoHalfResolution = v == "half";
+    I.add({"ssao-resolution", "AO buffer resolution: full, half or quarter", [](S& s, W v, W where) {
+               if (v != "half" && v != "full" && v != "quarter")
+                   fail(where, "ssao-resolution", "'" + v + "', expected full, half or quarter");
+               s.ssaoResolution = v == "full" ? 1.0 : v == "half" ? 0.5 : 0.25;
            }});
     I.add({"ao-only", "show the AO term alone", flag(&S::aoOnly, "ao-only"), true});
+    I.add({"master-volume", "master volume 0..1", num(&S::masterVolume, "master-volume", 0, 1)});
+    I.add({"effects-volume", "sound effects volume 0..1 (times the master volume)", num(&S::effectsVolume, "effects-volume", 0, 1)});
     I.add({"ssao-samples", "AO samples per pixel (1..32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
     I.add({"debug-max-render-targets", "debug: pretend the GPU has at most N simultaneous render targets (0 = as it is)",
            integer(&S::debugMaxRenderTargets, "debug-max-render-targets", 0, 8)});

@@ -40,12 +40,20 @@ struct Settings {
     double mouseSensitivity = 1.0;  // multiplies 0.022 deg per count (Quake's m_yaw)
     bool invertMouse = false;
     std::map<Action, std::string> bindings;  // action -> key name (see keyNames())
-    // Ambient occlusion (engine_ext/ssao). "off" until issue 4 picks the default by measurement.
-    std::string ssao = "off";
+    // Audio (engine_ext/audio): effects = master x effects; UI sounds use master alone
+    double masterVolume = 0.8;   // 0..1: leaves headroom for several shots at once
+    double effectsVolume = 1.0;
+    // Ambient occlusion (engine_ext/ssao). The default is picked by the error/cost table in
+    // engine_ext/ssao/README.md: lowest error of the modes at a third of the cost of a full-resolution
+    // 32-sample hemisphere.
+    std::string ssao = "horizon";
     double ssaoRadius = 0.6;     // metres
     double ssaoIntensity = 2.0;  // measured: against the ray-traced reference, 2 beats 1 on most views
     int ssaoSamples = 16;
-    bool ssaoHalfResolution = true;
+    // AO buffers at a quarter of the width and height: with the depth-aware blur and upsampling it
+    // looked the same as half at 720p, measured lower error than full-resolution 32 samples, and
+    // cut the AO passes' cost to a quarter (engine_ext/ssao/README.md).
+    double ssaoResolution = 0.25;  // of the frame's width and height: 1, 0.5 or 0.25
     int debugMaxRenderTargets = 0;  // debug: pretend the GPU has at most this many MRTs (0 = real)
     bool aoOnly = false;         // show the AO term alone (P toggles it)
     // Headless runs
@@ -73,6 +81,12 @@ struct Settings {
 // Valid key names (the same names replays use): a-z, 0-9, space, lshift, mouse1...
 const std::vector<std::string>& keyNames();
 bool isKeyName(const std::string& name);
+
+// The user's config file when none is named: $XDG_CONFIG_HOME/obscura/obscura.cfg (or ~/.config/...).
+std::string defaultConfigPath();
+// A config file's text with `values` set: lines for those keys are rewritten in place (the last one
+// if a key repeats), missing keys appended; comments, blank lines and every other key are kept.
+std::string updateConfigText(const std::string& text, const std::vector<std::pair<std::string, std::string>>& values);
 
 class SettingsParser {
 public:

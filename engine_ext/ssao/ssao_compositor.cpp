@@ -160,9 +160,9 @@ void AmbientOcclusion::removeCompositors() {
 }
 
 bool AmbientOcclusion::setMode(const std::string& mode) {
-    if (mode == mode_ && halfResolution_ == knobs_.halfResolution) return true;
+    if (mode == mode_ && resolution_ == knobs_.resolution) return true;
     removeCompositors();
-    halfResolution_ = knobs_.halfResolution;
+    resolution_ = knobs_.resolution;
     mode_ = "off";
     failure_.clear();
     if (mode == "off") return true;
@@ -179,7 +179,7 @@ bool AmbientOcclusion::setMode(const std::string& mode) {
             for (size_t t = 0; t < comp->getNumTechniques(); ++t)
                 for (const char* buffer : {"ao", "blurX", "blurY"})
                     if (auto* def = comp->getTechnique(t)->getTextureDefinition(buffer))
-                        def->widthFactor = def->heightFactor = halfResolution_ ? 0.5f : 1.0f;
+                        def->widthFactor = def->heightFactor = static_cast<float>(resolution_);
         Ogre::CompositorInstance* inst = cm.addCompositor(&viewport_, name);
         if (!inst || !inst->getTechnique()) {
             failure_ = "AO mode '" + mode + "': compositor " + name + " cannot run here (see the OGRE log); AO off";
@@ -202,7 +202,7 @@ std::string AmbientOcclusion::missingFeatures() const {
     if (targets < kRenderTargets)
         return std::to_string(kRenderTargets) + " simultaneous render targets and this GPU has " + std::to_string(targets);
     auto& tm = Ogre::TextureManager::getSingleton();
-    for (Ogre::PixelFormat f : {Ogre::PF_FLOAT32_R, Ogre::PF_FLOAT16_RGBA, Ogre::PF_FLOAT16_GR})
+    for (Ogre::PixelFormat f : {Ogre::PF_FLOAT32_R, Ogre::PF_FLOAT32_GR})
         if (!tm.isFormatSupported(Ogre::TEX_TYPE_2D, f, Ogre::TU_RENDERTARGET))
             return "render targets in " + Ogre::PixelUtil::getFormatName(f) + ", which this GPU lacks";
     return {};

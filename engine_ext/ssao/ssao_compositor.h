@@ -25,7 +25,7 @@ struct AoKnobs {
     double radius = 0.6;      // metres: about a hand's span, where contact shadows read
     double intensity = 2.0;   // see game/settings.h
     int samples = 16;         // 16: the seeds' 10-16, at half resolution
-    bool halfResolution = true;  // AO computed at half width and height, then blurred up
+    double resolution = 0.25;  // AO computed at this fraction of the width and height (1, 0.5, 0.25), blurred, upsampled
 };
 
 class AmbientOcclusion : public Ogre::CompositorInstance::Listener, public Ogre::MaterialManager::Listener {
@@ -75,7 +75,7 @@ private:
     std::string mode_ = "off";
     AoKnobs knobs_;
     bool aoOnly_ = false;
-    bool halfResolution_ = true;
+    double resolution_ = 0.25;
     int renderTargetLimit_ = 0;
     std::string failure_;
 };

@@ -282,7 +282,7 @@ void GameApp::applyAoSettings() {
     k.radius = settings_.ssaoRadius;
     k.intensity = settings_.ssaoIntensity;
     k.samples = settings_.ssaoSamples;
-    k.halfResolution = settings_.ssaoHalfResolution;
+    k.resolution = settings_.ssaoResolution;
     ao_->setKnobs(k);
     ao_->setAoOnly(settings_.aoOnly);
     if (!ao_->setMode(settings_.ssao)) {

@@ -115,3 +115,19 @@ TEST(Settings, AoModeIsValidatedAndCycles) {
     EXPECT_NE(errorOf({"--ssao", "hbao++"}).find("unknown mode 'hbao++', expected one of off, crytek, hemisphere, cone, horizon"),
               std::string::npos);
 }
+
+TEST(Settings, UpdateConfigTextRewritesKeysKeepsTheRest) {
+    const std::string before = "# my config\nfov = 100\n\nmouse-sensitivity = 2 # fast\nbind-jump = space\n";
+    const std::string after = updateConfigText(before, {{"mouse-sensitivity", "1.5"}, {"master-volume", "0.3"}});
+    EXPECT_EQ(after, "# my config\nfov = 100\n\nmouse-sensitivity = 1.5\nbind-jump = space\nmaster-volume = 0.3\n");
+    // What it writes reads back through the same parser.
+    const std::string path = testing::TempDir() + "/updated.cfg";
+    std::ofstream(path) << after;
+    Settings s;
+    SettingsParser p;
+    const char* argv[] = {"obscura", "--config", path.c_str()};
+    ASSERT_TRUE(p.parse(3, argv, s));
+    EXPECT_DOUBLE_EQ(s.mouseSensitivity, 1.5);
+    EXPECT_DOUBLE_EQ(s.masterVolume, 0.3);
+    EXPECT_DOUBLE_EQ(s.fov, 100);
+}
