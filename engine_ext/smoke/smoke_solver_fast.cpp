@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <utility>
-#include <vector>
 
 #include "smoke/smoke_state.h"
 #include "smoke/thread_pool.h"
@@ -169,10 +168,9 @@ void advect(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt, 
     });
     // Pass 2: MacCormack correction + clamp, dissipation, no smoke in solid cells.
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
-        std::vector<float> scratch(static_cast<std::size_t>(d.nx));  // one row, per plane task
+        float* scratch = s.rowScratch.data() + static_cast<std::size_t>(d.nx) * k;  // this plane's own row
         for (int j = 1; j < d.ny - 1; ++j)
-            advectCorrectRow(f, hatIn, out, cls, d, scale, decayD, decayT, decayV, d.sy * j + d.sz * k, 1, d.nx - 1,
-                             scratch.data());
+            advectCorrectRow(f, hatIn, out, cls, d, scale, decayD, decayT, decayV, d.sy * j + d.sz * k, 1, d.nx - 1, scratch);
         s.planeSumAfter[static_cast<std::size_t>(k)] = planeDensity(s.next[0], d, k);
     });
     double before = 0, after = 0;

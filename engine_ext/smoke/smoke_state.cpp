@@ -83,6 +83,7 @@ void initialiseState(SmokeState& s, const SmokeSettings& st) {
     s.planeB.assign(g.nz, 0.f);
     s.planeSum.assign(g.nz, 0.0);
     s.planeSumAfter.assign(g.nz, 0.0);
+    s.rowScratch.assign(static_cast<std::size_t>(g.nx) * g.nz, 0.f);
     s.cellClass = s.staticClass;
     s.dynamicCells.clear();
     rebuildDerived(s, 0, g.nz - 1);

@@ -51,6 +51,7 @@ struct SmokeState {
     std::vector<float> hat[5], next[5], omega[4], rhs, pressureTmp;
     std::vector<float> planeA, planeB;  // per z-plane reduction partials (fixed order)
     std::vector<double> planeSum, planeSumAfter;  // per z-plane density sums (mass renormalisation)
+    std::vector<float> rowScratch;                 // one x row per z-plane (advection), so step() never allocates
 
     Vec3 centre;           // detonation point
     Vec3 emitterCentre;

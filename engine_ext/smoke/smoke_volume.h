@@ -11,6 +11,7 @@
 //   when vol.finished(): drop it (SmokeManager does this).
 //
 // Determinism: step() gives bitwise identical fields for any thread count (SmokeSettings::threads).
+// Movable, not copyable; a moved-from volume may only be assigned to or destroyed.
 #pragma once
 
 #include <cstdint>
