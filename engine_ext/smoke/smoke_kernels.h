@@ -106,7 +106,7 @@ OBSCURA_SMOKE_INLINE float wFaceV(const float* v, std::ptrdiff_t c, const Dims& 
 }
 
 // Samples within one cell of a grid point. Every advection trace moves at most one cell per axis
-// (clampDisp), so its sample is a trilinear blend of the point's own value and, per axis, ONE
+// (cells()), so its sample is a trilinear blend of the point's own value and, per axis, ONE
 // neighbour: the one toward the displacement, weighted |p|. Written with value selects instead
 // of computed indices, so the loops over x vectorise (no gathers) and no index can go astray.
 OBSCURA_SMOKE_INLINE float absf(float x) { return sel(x < 0.f, -x, x); }
