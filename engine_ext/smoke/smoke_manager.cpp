@@ -23,6 +23,10 @@ void SmokeManager::step(double dt) {
                    volumes_.end());
 }
 
+void SmokeManager::computeTransmittance(const Vec3& towardLight) {
+    for (auto& e : volumes_) e.volume.computeTransmittance(towardLight);
+}
+
 void SmokeManager::setMovingObstacles(const std::vector<MovingObstacle>& obstacles) {
     for (auto& e : volumes_) e.volume.setMovingObstacles(obstacles);
 }

@@ -25,6 +25,8 @@ public:
     int spawn(const map::Level& level, const std::vector<TriangleMesh>& meshes, const Vec3& centre);
 
     void step(double dt);  // steps every volume, then drops the finished ones
+    // Every volume's transmittance towards the light (SmokeVolume::computeTransmittance).
+    void computeTransmittance(const Vec3& towardLight);
     void setMovingObstacles(const std::vector<MovingObstacle>& obstacles);
     // Carves every volume the segment passes through.
     void carve(const Vec3& origin, const Vec3& direction, double length, double radius, double wakeSpeed = 3.0);

@@ -226,14 +226,80 @@ float divergenceRow(const float* u, const float* v, const float* w, const float*
     return maxDiv;
 }
 
-// One colour of red-black Gauss-Seidel on a row: cells i0, i0 + 2, ... (in place: a cell of one
-// colour reads only cells of the other, so the order within a colour cannot matter).
-void gaussSeidelRow(float* p, const float* rhs, const float* dinv, Dims d, std::ptrdiff_t row, int i0, int i1) {
+// Red-black layout (see SmokeState::rbPressure): row r's cell i of colour (i + j + k) & 1 sits at
+// r * hx + (i >> 1) of that colour's array. Splitting a natural row into its two colours:
+void splitRow(const float* natural, float* even, float* odd, int nx) {
+    // even: cells 0, 2, 4, ...; odd: cells 1, 3, ... (a colour is even or odd by the row's parity)
+    const int pairs = nx / 2;
 #pragma omp simd
-    for (int i = i0; i < i1; i += 2) {
-        const std::ptrdiff_t c = row + i;
-        p[c] = kernels::pressureUpdate(kernels::neighbourSum(p, c, d), rhs[c], dinv[c]);
+    for (int m = 0; m < pairs; ++m) {
+        even[m] = natural[2 * m];
+        odd[m] = natural[2 * m + 1];
     }
+    if (nx & 1) {
+        even[pairs] = natural[nx - 1];
+        odd[pairs] = 0.f;
+    }
+}
+void mergeRow(float* natural, const float* even, const float* odd, int nx) {
+    const int pairs = nx / 2;
+#pragma omp simd
+    for (int m = 0; m < pairs; ++m) {
+        natural[2 * m] = even[m];
+        natural[2 * m + 1] = odd[m];
+    }
+    if (nx & 1) natural[nx - 1] = even[pairs];
+}
+
+// One colour's sweep on row (j, k): its cells i = 2m + e read only the other colour, which holds
+// the x neighbours at m - 1 + e and m + e of the same row and the y / z neighbours at m of the
+// rows around. Same sum order as kernels::neighbourSum, so the same bits as the natural layout.
+void gaussSeidelRow(float* p, const float* other, const float* rhs, const float* dinv, std::ptrdiff_t row,
+                    std::ptrdiff_t rowY, std::ptrdiff_t rowZ, int e, int m0, int m1) {
+#pragma omp simd
+    for (int m = m0; m <= m1; ++m) {
+        const std::ptrdiff_t c = row + m, x = c - 1 + e;
+        const float sum = ((((other[x] + other[x + 1]) + other[c - rowY]) + other[c + rowY]) + other[c - rowZ]) + other[c + rowZ];
+        p[c] = kernels::pressureUpdate(sum, rhs[c], dinv[c]);
+    }
+}
+
+void redBlackGaussSeidel(SmokeState& s, ThreadPool& pool, int iterations) {
+    const Dims d = s.dims;
+    const int hx = s.rbWidth();
+    const std::ptrdiff_t rowY = hx, rowZ = static_cast<std::ptrdiff_t>(hx) * d.ny;
+    auto split = [&](const std::vector<float>& natural, std::vector<float>* colours) {
+        forPlanes(pool, 0, d.nz, [&](int k) {
+            for (int j = 0; j < d.ny; ++j) {
+                const int o = (j + k) & 1;  // the colour of the row's even cells
+                const std::ptrdiff_t r = (static_cast<std::ptrdiff_t>(j) + static_cast<std::ptrdiff_t>(d.ny) * k) * hx;
+                splitRow(natural.data() + d.sy * j + d.sz * k, colours[o].data() + r, colours[o ^ 1].data() + r, d.nx);
+            }
+        });
+    };
+    split(s.pressure, s.rbPressure);
+    split(s.rhs, s.rbRhs);
+    split(s.diagInv, s.rbDiagInv);
+    for (int it = 0; it < iterations; ++it)
+        for (int colour = 0; colour < 2; ++colour) {
+            float* p = s.rbPressure[colour].data();
+            const float* other = s.rbPressure[colour ^ 1].data();
+            const float *rhs = s.rbRhs[colour].data(), *dinv = s.rbDiagInv[colour].data();
+            forPlanes(pool, 1, d.nz - 1, [&](int k) {
+                for (int j = 1; j < d.ny - 1; ++j) {
+                    const int e = colour ^ ((j + k) & 1);  // this colour's cells are i = 2m + e
+                    const std::ptrdiff_t r = (static_cast<std::ptrdiff_t>(j) + static_cast<std::ptrdiff_t>(d.ny) * k) * hx;
+                    gaussSeidelRow(p, other, rhs, dinv, r, rowY, rowZ, e, 1 - e, (d.nx - 2 - e) >> 1);
+                }
+            });
+        }
+    forPlanes(pool, 0, d.nz, [&](int k) {
+        for (int j = 0; j < d.ny; ++j) {
+            const int o = (j + k) & 1;
+            const std::ptrdiff_t r = (static_cast<std::ptrdiff_t>(j) + static_cast<std::ptrdiff_t>(d.ny) * k) * hx;
+            mergeRow(s.pressure.data() + d.sy * j + d.sz * k, s.rbPressure[o].data() + r, s.rbPressure[o ^ 1].data() + r, d.nx);
+        }
+    });
 }
 
 void jacobiRow(const float* p, float* q, const float* rhs, const float* dinv, Dims d, std::ptrdiff_t row, int i0, int i1) {
@@ -281,13 +347,7 @@ void project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emi
 
     const int iterations = std::max(0, st.pressureIterations);
     if (st.pressureSolver == PressureSolver::RedBlackGaussSeidel) {
-        float* p = s.pressure.data();
-        for (int it = 0; it < iterations; ++it)
-            for (int colour = 0; colour < 2; ++colour)
-                forPlanes(pool, 1, d.nz - 1, [&](int k) {
-                    for (int j = 1; j < d.ny - 1; ++j)
-                        gaussSeidelRow(p, rhs, dinv, d, d.sy * j + d.sz * k, 1 + ((1 + j + k + colour) & 1), d.nx - 1);
-                });
+        redBlackGaussSeidel(s, pool, iterations);
     } else {
         for (int it = 0; it < iterations; ++it) {
             const float* p = s.pressure.data();

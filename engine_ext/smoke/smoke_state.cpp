@@ -22,9 +22,7 @@ void initialiseState(SmokeState& s, const SmokeSettings& st) {
     // Seal: fluid cells not 6-connected to the detonation point can never receive smoke; making
     // them solid keeps the pressure problem of the centre's region well posed (and its source
     // compatible when that region is closed).
-    const Vec3 cc = g.toCellCoords(s.centre);
-    const std::size_t start = g.index(static_cast<int>(std::lround(cc.x)), static_cast<int>(std::lround(cc.y)),
-                                      static_cast<int>(std::lround(cc.z)));
+    const std::size_t start = s.startCell;
     std::vector<std::uint8_t> reached(n, 0);
     std::vector<std::size_t> stack{start};
     reached[start] = 1;
@@ -84,6 +82,9 @@ void initialiseState(SmokeState& s, const SmokeSettings& st) {
     s.planeSum.assign(g.nz, 0.0);
     s.planeSumAfter.assign(g.nz, 0.0);
     s.rowScratch.assign(static_cast<std::size_t>(g.nx) * g.nz, 0.f);
+    for (int colour = 0; colour < 2; ++colour)
+        for (auto* f : {&s.rbPressure[colour], &s.rbRhs[colour], &s.rbDiagInv[colour]})
+            f->assign(static_cast<std::size_t>(s.rbWidth()) * g.ny * g.nz, 0.f);
     s.cellClass = s.staticClass;
     s.dynamicCells.clear();
     rebuildDerived(s, 0, g.nz - 1);
@@ -194,9 +195,6 @@ void applyEmitter(SmokeState& s, const SmokeSettings& st, float dt) {
     // Scan only the sphere's bounding box.
     const Vec3 lo = g.toCellCoords(s.emitterCentre - Vec3{st.emitterRadius, st.emitterRadius, st.emitterRadius});
     const Vec3 hi = g.toCellCoords(s.emitterCentre + Vec3{st.emitterRadius, st.emitterRadius, st.emitterRadius});
-    const Vec3 cc = g.toCellCoords(s.centre);
-    const int ci = static_cast<int>(std::lround(cc.x)), cj = static_cast<int>(std::lround(cc.y)),
-              ck = static_cast<int>(std::lround(cc.z));
     auto emitInto = [&](std::size_t c) {
         if (s.cellClass[c] != kFluid) return;
         s.density[c] = std::min(s.density[c] + add, kMaxDensity);
@@ -219,7 +217,7 @@ void applyEmitter(SmokeState& s, const SmokeSettings& st, float dt) {
                     emitInto(g.index(i, j, k));
                     any = true;
                 }
-    if (!any) emitInto(g.index(ci, cj, ck));
+    if (!any) emitInto(s.startCell);
 }
 
 void setBorderFaces(SmokeState& s) {

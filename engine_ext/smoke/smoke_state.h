@@ -52,8 +52,13 @@ struct SmokeState {
     std::vector<float> planeA, planeB;  // per z-plane reduction partials (fixed order)
     std::vector<double> planeSum, planeSumAfter;  // per z-plane density sums (mass renormalisation)
     std::vector<float> rowScratch;                 // one x row per z-plane (advection), so step() never allocates
+    // Red-black Gauss-Seidel works on the two colours stored apart (row r = j + ny k holds its
+    // cells of one colour at (i >> 1) in rbWidth() slots), so each sweep is contiguous.
+    std::vector<float> rbPressure[2], rbRhs[2], rbDiagInv[2];
+    int rbWidth() const { return (grid.nx + 1) / 2; }
 
     Vec3 centre;           // detonation point
+    std::size_t startCell = 0;  // the free cell nearest the centre: the flood fill's and emitter's seed
     Vec3 emitterCentre;
     bool regionOpen = false;  // the centre's fluid region reaches an open border cell
     std::size_t fluidCells = 0, emitterCells = 0;

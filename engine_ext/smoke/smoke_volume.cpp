@@ -62,10 +62,41 @@ SmokeVolume SmokeVolume::create(const map::Level& level, const std::vector<Trian
     s.grid.origin = centre - Vec3{n * st.cellSize, n * st.cellSize, n * st.cellSize} * 0.5;
     s.centre = centre;
     voxelizeLevel(level, meshes, s.grid, s.voxelSolid);
+    for (const auto& brush : level.brushes) {
+        if (!brush.solid || centre.x < brush.bounds.min.x || centre.y < brush.bounds.min.y ||
+            centre.z < brush.bounds.min.z || centre.x > brush.bounds.max.x || centre.y > brush.bounds.max.y ||
+            centre.z > brush.bounds.max.z)
+            continue;
+        const ConvexHull hull = makeHull(brush);
+        bool inside = !hull.planes.empty();
+        for (const Plane& pl : hull.planes) inside = inside && dot(pl.normal, centre) < pl.offset - 1e-6;
+        if (inside)
+            throw std::runtime_error("smoke: the detonation point " + str(centre) + " is inside a solid brush (line " +
+                                     std::to_string(brush.pos.line) + " of the map)");
+    }
+    // The seed cell: the centre's own, or, when conservative voxelisation made that one solid (a
+    // grenade resting on a floor or against a wall), the free cell nearest the centre within two
+    // cells (ties: the first in x-fastest order).
     const Vec3 cc = s.grid.toCellCoords(centre);
-    const std::size_t centreCell = s.grid.index(static_cast<int>(std::lround(cc.x)), static_cast<int>(std::lround(cc.y)),
-                                                static_cast<int>(std::lround(cc.z)));
-    if (s.voxelSolid[centreCell])
+    const int ci = static_cast<int>(std::lround(cc.x)), cj = static_cast<int>(std::lround(cc.y)),
+              ck = static_cast<int>(std::lround(cc.z));
+    double best = 1e300;
+    bool found = false;
+    for (int dk = -2; dk <= 2; ++dk)
+        for (int dj = -2; dj <= 2; ++dj)
+            for (int di = -2; di <= 2; ++di) {
+                const int i = ci + di, j = cj + dj, k = ck + dk;
+                if (i < 1 || j < 1 || k < 1 || i > n - 2 || j > n - 2 || k > n - 2) continue;
+                if (s.voxelSolid[s.grid.index(i, j, k)]) continue;
+                const Vec3 off = s.grid.cellCentre(i, j, k) - centre;
+                const double dist = dot(off, off);
+                if (dist < best) {
+                    best = dist;
+                    s.startCell = s.grid.index(i, j, k);
+                    found = true;
+                }
+            }
+    if (!found)
         throw std::runtime_error("smoke: the detonation point " + str(centre) +
                                  " is inside a solid (brush or mesh) at the grid's resolution");
     initialiseState(s, st);

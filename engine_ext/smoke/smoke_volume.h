@@ -45,8 +45,9 @@ class SmokeVolume {
 public:
     // Builds the grid around `centre` and voxelises the level's solid brushes and `meshes` into
     // it. Throws std::runtime_error with a readable message when the level has no brushes, the
-    // centre is not finite, is outside the level's bounds or inside a solid, or cellSize is not
-    // positive. A resolution outside [16, 128] is clamped with a warning on stderr.
+    // centre is not finite, is outside the level's bounds or inside a solid brush, has no free cell
+    // within two cells (meshes), or cellSize is not positive. A centre on a floor or against a wall
+    // (its cell solid by conservative voxelisation) seeds from the nearest free cell. A resolution outside [16, 128] is clamped with a warning on stderr.
     // `pool`: share one thread pool between volumes (SmokeManager does); null = own pool of
     // settings.threads threads.
     static SmokeVolume create(const map::Level& level, const std::vector<TriangleMesh>& meshes, const Vec3& centre,

@@ -47,6 +47,14 @@ TEST(SmokeCreate, BadInputGivesAClearErrorOrAClamp) {
     badCell.cellSize = 0;
     EXPECT_NE(createError(room(), {0, 1, 0}, badCell).find("cell size"), std::string::npos);
 
+    // A grenade resting on the floor: its own cell touches the floor (solid by conservative
+    // voxelisation) at an odd resolution; the nearest free cell seeds the cloud.
+    SmokeSettings odd = st;
+    odd.resolution = 21;
+    SmokeVolume onFloor = SmokeVolume::create(room(), {}, {0.3, 0.01, -0.2}, odd);
+    onFloor.step(1.0 / 30);
+    EXPECT_GT(onFloor.totalDensity(), 0.0);
+
     SmokeSettings zero = st;
     zero.resolution = 0;
     EXPECT_EQ(SmokeVolume::create(room(), {}, {0, 1, 0}, zero).grid().nx, 16);
