@@ -68,10 +68,12 @@ double streamTriadGBs(ThreadPool& pool, std::size_t n, int reps) {
 //   divergence: read u v w, class, source, write rhs                            21
 //   gradient + residual: read p, u v w, 3 masks, rhs, diagInv, write u v w      39
 //   substep speed scan: read u v w                                              12
+//   RBGS only: split p, rhs, diagInv into colours (read 12, write 12), merge p (read 4,
+//     write 4)                                                                   32
 //   per pressure iteration: RBGS 2 sweeps x (read p 4 + rhs, diagInv of one
 //     colour 4 + write one colour 2) = 20; Jacobi read p rhs diagInv + write 16
 double bytesPerStep(std::size_t cells, int iterations, PressureSolver solver) {
-    const double fixed = 40 + 61 + 8 + 28 + 28 + 47 + 21 + 39 + 12;
+    const double fixed = 40 + 61 + 8 + 28 + 28 + 47 + 21 + 39 + 12 + (solver == PressureSolver::Jacobi ? 0 : 32);
     const double perIteration = solver == PressureSolver::Jacobi ? 16 : 20;
     return static_cast<double>(cells) * (fixed + perIteration * iterations);
 }
