@@ -1,6 +1,7 @@
 // See game_app.h.
 #include "app/game_app.h"
 
+#include "app/game_smoke.h"
 #include "app/sdl_keys.h"
 #include "core/fixed_step.h"
 #include "timedemo_stats.h"
@@ -138,6 +139,7 @@ void GameApp::locateResources() {
 void GameApp::shutdown() {
     // Order matters (see shared/README): our OGRE objects first, then RTSS, overlays, root.
     hud_.reset();
+    smoke_.reset();
     ao_.reset();
     props_.reset();
     levelGeometry_.reset();
@@ -229,6 +231,14 @@ void GameApp::createScene() {
         config.startPitch = degToRad(pitch);
     }
     sim_ = std::make_unique<sim::Simulation>(*level_, config, modelMeshes);
+    smoke_ = std::make_unique<GameSmoke>(*level_, modelMeshes, render::computeLevelLighting(*level_).sunDirection,
+                                         1.0 / settings_.tickRate);
+    if (!settings_.smokeAt.empty()) {
+        std::istringstream is(settings_.smokeAt);
+        Vec3 p;
+        is >> p.x >> p.y >> p.z;
+        smoke_->spawn(p);
+    }
     previousPlayer_ = std::make_unique<sim::PlayerState>(sim_->player());
     props_ = std::make_unique<render::PropView>(*scene_, *materials_);
 
@@ -299,6 +309,7 @@ void GameApp::stepSimulation() {
     handleTriggeredActions();
     *previousPlayer_ = sim_->player();
     sim_->step(input_.takeCommand());
+    smoke_->onTick(sim_->player());
 }
 
 void GameApp::handleTriggeredActions() {
@@ -339,7 +350,8 @@ void GameApp::updateView(double alpha) {
     cameraNode_->setOrientation(Ogre::Quaternion(Ogre::Radian(static_cast<float>(yaw)), Ogre::Vector3::UNIT_Y) *
                                 Ogre::Quaternion(Ogre::Radian(static_cast<float>(pitch)), Ogre::Vector3::UNIT_X));
     std::vector<render::PropPose> poses;
-    for (const auto& b : sim_->bodyPoses()) poses.push_back({b.position, b.qx, b.qy, b.qz, b.qw, b.halfExtents});
+    for (const auto& b : sim_->bodyPoses())
+        poses.push_back({b.position, b.qx, b.qy, b.qz, b.qw, b.halfExtents, render::PropPose::Shape::Box, "crate"});
     props_->update(poses);
 }
 
@@ -350,6 +362,7 @@ void GameApp::renderFrame(double frameMs) {
     hs.frameMsIsFixed = settings_.headless;
     hs.status.push_back("AO: " + ao_->mode() + (ao_->aoOnly() ? " (AO only)" : ""));
     hud_->update(hs);
+    smoke_->render(*ao_);
     mRoot->renderOneFrame();
 }
 

@@ -27,6 +27,7 @@ namespace sim { class Simulation; struct PlayerState; }
 namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; }
 namespace replay { struct Script; class Recorder; }
 namespace ssao { class AmbientOcclusion; }
+class GameSmoke;
 
 class GameApp : public OgreBites::ApplicationContext, public OgreBites::InputListener {
 public:
@@ -90,6 +91,7 @@ private:
     std::unique_ptr<render::Hud> hud_;
     std::unique_ptr<ssao::AmbientOcclusion> ao_;
     void applyAoSettings();
+    std::unique_ptr<GameSmoke> smoke_;
 
     std::unique_ptr<replay::Script> script_;      // --replay / --timedemo
     std::unique_ptr<replay::Recorder> recorder_;  // --record
