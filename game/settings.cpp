@@ -139,7 +139,7 @@ struct Option {
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
-                                    "timedemo", "config", "data-dir", "log", "debug-max-render-targets"};
+                                    "timedemo", "config", "data-dir", "log", "debug-max-render-targets", "smoke-at"};
 
 struct SettingsParser::Impl {
     std::vector<Option> options;
@@ -228,6 +228,14 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                for (double& x : d)
                    if (!(is >> x)) fail(where, "start-pose", "'" + v + "', expected 'x y z yaw pitch'");
                s.startPose = v;
+           }});
+    I.add({"smoke-at", "release a smoke grenade's cloud at 'x y z' (metres) when the level starts",
+           [](S& s, W v, W where) {
+               std::istringstream is(v);
+               double d[3];
+               for (double& x : d)
+                   if (!(is >> x)) fail(where, "smoke-at", "'" + v + "', expected 'x y z'");
+               s.smokeAt = v;
            }});
     I.add({"debug-panel", "show the ImGui debug panel at start", flag(&S::showDebugPanel, "debug-panel"), true});
     for (int a = 0; a < static_cast<int>(Action::Count); ++a) {

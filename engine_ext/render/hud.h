@@ -1,7 +1,9 @@
-// The HUD, drawn with OGRE's ImGui overlay: a crosshair, the frame time, status lines, and a
-// debug panel (toggled by a key) to which subsystems add their own sections of knobs.
+// The HUD, drawn with OGRE's ImGui overlay: a crosshair (with a hit marker), ammo, score, the
+// grenade throw charge, the frame time and its graph, status lines (the AO mode), and a debug
+// panel (toggled by a key) to which subsystems add their own sections of knobs.
 #pragma once
 
+#include <deque>
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,6 +21,12 @@ struct HudState {
     double frameMs = 0;      // shown as the frame time
     bool frameMsIsFixed = false;  // headless runs show the fixed tick time so captures are repeatable
     std::vector<std::string> status;  // extra lines under the frame time (AO mode, ...)
+    // Combat (absent: magazineSize 0)
+    int magazine = 0, magazineSize = 0, reserve = 0;
+    double reloadProgress = -1;  // 0..1 while reloading, else < 0
+    int score = 0;
+    double hitMarker = 0;        // 1 just after a hit, fading to 0
+    double throwCharge = -1;     // 0..1 while the grenade key is held, else < 0
 };
 
 class Hud {
@@ -30,6 +38,8 @@ public:
 
     // A section of the debug panel: a title and a function that draws its ImGui widgets.
     void addPanelSection(std::string title, std::function<void()> draw);
+    // A window drawn every frame after the HUD (the pause menu); it decides itself when to show.
+    void setMenu(std::function<void()> draw) { menu_ = std::move(draw); }
     void setPanelVisible(bool v) { panelVisible_ = v; }
     bool panelVisible() const { return panelVisible_; }
 
@@ -38,8 +48,12 @@ public:
 
 private:
     void drawPanel();
+    void drawCombat(const HudState& state);
+    void drawFrameGraph();
     Ogre::ImGuiOverlay* overlay_ = nullptr;  // owned by OGRE's OverlayManager once added
     bool panelVisible_ = false;
+    std::deque<float> frameHistory_;
+    std::function<void()> menu_;  // the last kFrameHistory frame times, ms
     std::vector<std::pair<std::string, std::function<void()>>> sections_;
 };
 

@@ -11,7 +11,8 @@ namespace obscura::ssao {
 
 namespace {
 // Pass identifiers (media/ssao/ssao.compositor).
-constexpr Ogre::uint32 kBlurX = 1, kBlurY = 2, kAoPass = 10, kComposite = 20;
+constexpr Ogre::uint32 kBlurX = 1, kBlurY = 2, kAoPass = 10, kComposite = 20, kPlainComposite = 21;
+constexpr std::size_t kMaxVolumes = 4;   // the composite's smoke samplers
 constexpr int kMaxSamples = 32;          // the shaders' kernel[] size
 constexpr int kNoiseSize = 4;            // 4x4 interleaved rotations: the blur's 5 taps cover it
 constexpr int kRenderTargets = 4;        // the G-buffer's (media/ssao/ssao.compositor)
@@ -68,6 +69,13 @@ AmbientOcclusion::AmbientOcclusion(Ogre::Viewport& viewport, Ogre::Camera& camer
     heightMaterial_->load();
     mm.addListener(this, kScheme);
     mm.addListener(this, kHeightScheme);
+
+    // Unused smoke units get an empty 1x1x1 volume.
+    Ogre::uint16 emptyCell = 0;
+    Ogre::Image emptyVolume;
+    emptyVolume.loadDynamicImage(reinterpret_cast<Ogre::uchar*>(&emptyCell), 1, 1, 1, Ogre::PF_RG8);
+    noVolume_ = Ogre::TextureManager::getSingleton().loadImage("Obscura/SSAO/NoVolume", Ogre::RGN_DEFAULT, emptyVolume,
+                                                              Ogre::TEX_TYPE_3D, 0);
 
     // Until buildHeightMap: one texel of "nothing", so heightfield reads as the horizon mode.
     const float none = kNoHeight;
@@ -148,6 +156,20 @@ AmbientOcclusion::~AmbientOcclusion() {
     heightMaterial_.reset();
     Ogre::TextureManager::getSingleton().remove(noise_);
     Ogre::TextureManager::getSingleton().remove(heightMap_);
+    Ogre::TextureManager::getSingleton().remove(noVolume_);
+}
+
+void AmbientOcclusion::setVolumes(std::vector<VolumeBinding> volumes, float densityScale, float time) {
+    if (volumes.size() > kMaxVolumes) volumes.resize(kMaxVolumes);
+    volumes_ = std::move(volumes);
+    volumeDensityScale_ = densityScale;
+    volumeTime_ = time;
+    // AO off: the plain chain only while there is smoke to march.
+    if (mode_ == "off" && plainChain_ != !volumes_.empty()) {
+        const std::string m = mode_;
+        mode_.clear();
+        setMode(m);
+    }
 }
 
 void AmbientOcclusion::removeCompositors() {
@@ -160,12 +182,14 @@ void AmbientOcclusion::removeCompositors() {
 }
 
 bool AmbientOcclusion::setMode(const std::string& mode) {
-    if (mode == mode_ && resolution_ == knobs_.resolution) return true;
+    const bool plain = mode == "off" && !volumes_.empty();
+    if (mode == mode_ && resolution_ == knobs_.resolution && plain == plainChain_) return true;
     removeCompositors();
     resolution_ = knobs_.resolution;
     mode_ = "off";
+    plainChain_ = false;
     failure_.clear();
-    if (mode == "off") return true;
+    if (mode == "off" && !plain) return true;
     failure_ = missingFeatures();
     if (!failure_.empty()) {
         failure_ = "AO mode '" + mode + "' needs " + failure_ + "; AO off";
@@ -173,7 +197,7 @@ bool AmbientOcclusion::setMode(const std::string& mode) {
         return false;
     }
     auto& cm = Ogre::CompositorManager::getSingleton();
-    for (const std::string& name : {std::string("Obscura/SSAO/GBuffer"), compositorFor(mode)}) {
+    for (const std::string& name : {std::string("Obscura/SSAO/GBuffer"), plain ? std::string("Obscura/SSAO/Plain") : compositorFor(mode)}) {
         // The AO buffers' size is the one knob the script leaves to code.
         if (auto comp = cm.getByName(name, Ogre::RGN_DEFAULT))
             for (size_t t = 0; t < comp->getNumTechniques(); ++t)
@@ -192,7 +216,35 @@ bool AmbientOcclusion::setMode(const std::string& mode) {
         instances_.push_back(inst);
     }
     mode_ = mode;
+    plainChain_ = plain;
     return true;
+}
+
+void AmbientOcclusion::bindVolumes(Ogre::Pass& pass, Ogre::GpuProgramParameters& fp) {
+    const Ogre::Matrix4& proj = camera_.getProjectionMatrix();
+    fp.setNamedConstant("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
+    fp.setNamedConstant("flipY", viewport_.getTarget()->requiresTextureFlipping() ? 1.0f : 0.0f);
+    fp.setNamedConstant("inverseView", camera_.getViewMatrix().inverse());
+    fp.setNamedConstant("smokeCount", static_cast<float>(volumes_.size()));
+    fp.setNamedConstant("smokeDensityScale", volumeDensityScale_);
+    fp.setNamedConstant("smokeTime", volumeTime_);
+    float mins[kMaxVolumes * 3] = {}, sizes[kMaxVolumes * 3] = {}, boxMins[kMaxVolumes * 3] = {}, boxSizes[kMaxVolumes * 3] = {};
+    for (std::size_t i = 0; i < kMaxVolumes; ++i) {
+        const bool used = i < volumes_.size();
+        if (auto* unit = pass.getTextureUnitState("smokeMap" + std::to_string(i)))
+            unit->setTexture(used ? volumes_[i].texture : noVolume_);
+        if (!used) continue;
+        for (int c = 0; c < 3; ++c) {
+            mins[i * 3 + c] = volumes_[i].min[c];
+            sizes[i * 3 + c] = volumes_[i].size[c];
+            boxMins[i * 3 + c] = volumes_[i].occupiedMin[c];
+            boxSizes[i * 3 + c] = volumes_[i].occupiedSize[c];
+        }
+    }
+    fp.setNamedConstant("smokeMin", mins, kMaxVolumes, 3);
+    fp.setNamedConstant("smokeSize", sizes, kMaxVolumes, 3);
+    fp.setNamedConstant("smokeBoxMin", boxMins, kMaxVolumes, 3);
+    fp.setNamedConstant("smokeBoxSize", boxSizes, kMaxVolumes, 3);
 }
 
 std::string AmbientOcclusion::missingFeatures() const {
@@ -240,8 +292,10 @@ void AmbientOcclusion::notifyMaterialRender(Ogre::uint32 passId, Ogre::MaterialP
         }
     } else if (passId == kBlurX || passId == kBlurY) {
         fp->setNamedConstant("direction", passId == kBlurX ? Ogre::Vector2(1, 0) : Ogre::Vector2(0, 1));
-    } else if (passId == kComposite) {
-        fp->setNamedConstant("aoOnly", aoOnly_ ? 1.0f : 0.0f);
+    } else if (passId == kComposite || passId == kPlainComposite) {
+        fp->setNamedConstant("aoOnly", aoOnly_ && passId == kComposite ? 1.0f : 0.0f);
+        fp->setNamedConstant("aoPresent", passId == kComposite ? 1.0f : 0.0f);
+        bindVolumes(*pass, *fp);
     }
 }
 

@@ -1,7 +1,9 @@
 // OGRE glue of the AO modes: installs the GBuffer material scheme (every material gets the
 // G-buffer technique without edits), the per-pixel noise texture, the kernel and the level's
 // top-down height map (heightfield mode), and switches the compositor chain on a viewport when the
-// mode changes. Knob values come from the game.
+// mode changes. Knob values come from the game. The chain's composite is also where the smoke
+// grenades' volumes are ray-marched against the scene depth (setVolumes): with AO off and smoke
+// present the chain runs without its AO passes.
 #pragma once
 
 #include <OgreCompositorInstance.h>
@@ -20,6 +22,13 @@ class Viewport;
 }  // namespace Ogre
 
 namespace obscura::ssao {
+
+// A ray-marched volume (a smoke grenade's density and transmittance, RG) and its world box.
+struct VolumeBinding {
+    Ogre::TexturePtr texture;  // TEX_TYPE_3D
+    Ogre::Vector3 min, size;   // the texture's world box
+    Ogre::Vector3 occupiedMin, occupiedSize;  // where it holds anything: rays are marched only there
+};
 
 struct AoKnobs {
     double radius = 0.6;      // metres: about a hand's span, where contact shadows read
@@ -50,6 +59,9 @@ public:
     // Radius, intensity and samples apply at the next frame; the resolution at the next setMode.
     void setKnobs(const AoKnobs& k) { knobs_ = k; }
     void setAoOnly(bool on) { aoOnly_ = on; }
+    // The volumes to ray-march this frame (at most 4; more are ignored), with the export's density
+    // scale and the game time (the sub-grid noise drifts with it).
+    void setVolumes(std::vector<VolumeBinding> volumes, float densityScale, float time);
     bool aoOnly() const { return aoOnly_; }
 
     // Ogre::CompositorInstance::Listener
@@ -63,6 +75,7 @@ public:
 private:
     void removeCompositors();
     std::string missingFeatures() const;
+    void bindVolumes(Ogre::Pass& pass, Ogre::GpuProgramParameters& fp);
 
     Ogre::Viewport& viewport_;
     Ogre::Camera& camera_;
@@ -78,6 +91,10 @@ private:
     double resolution_ = 0.25;
     int renderTargetLimit_ = 0;
     std::string failure_;
+    std::vector<VolumeBinding> volumes_;
+    float volumeDensityScale_ = 1, volumeTime_ = 0;
+    Ogre::TexturePtr noVolume_;  // 1x1x1, bound to unused smoke units
+    bool plainChain_ = false;    // GBuffer + Plain: AO off, smoke on
 };
 
 }  // namespace obscura::ssao

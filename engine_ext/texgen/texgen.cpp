@@ -129,6 +129,26 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
                                                                                           : Colour{0.15, 0.32, 0.45};
         return [fbm, base](double u, double v) { return base * (0.75 + 0.5 * fbm->at(u, v)); };
     }
+    if (has(name, "target")) {
+        // A shooting target: a bullseye of 5 rings (red centre, alternating white and black) on a
+        // white board, so hits read from 30 m; a little fBm grime so it is not flat.
+        return [fine](double u, double v) {
+            const double r = std::hypot(u - 0.5, v - 0.5) * 2.0;  // 0 at the centre, 1 at the edge
+            const int ring = static_cast<int>(r * 5.0);
+            Colour c = ring == 0 ? Colour{0.75, 0.08, 0.06} : ring >= 5 ? Colour{0.85, 0.84, 0.8}
+                       : (ring & 1) ? Colour{0.08, 0.08, 0.08} : Colour{0.88, 0.87, 0.84};
+            return c * (0.92 + 0.12 * fine->at(u, v));
+        };
+    }
+    if (has(name, "barrel")) {
+        // An oil drum: blue paint with two darker hoops, worn paler in patches.
+        return [fbm, fine](double u, double v) {
+            (void)u;
+            const bool hoop = std::fabs(v - 0.33) < 0.025 || std::fabs(v - 0.67) < 0.025;
+            const Colour paint = Colour{0.12, 0.24, 0.5} * (0.8 + 0.3 * fbm->at(u, v)) * (0.95 + 0.1 * fine->at(u, v));
+            return hoop ? paint * 0.6 : paint;
+        };
+    }
     if (has(name, "light")) {
         // A light panel: a bright diffuser (0.8, not white: it is an albedo, the glow is the
         // light's job) inside a grey metal frame 8 % of the tile wide.

@@ -9,9 +9,14 @@ uniform sampler2D aoMap;       // r = AO, g = depth, at the AO's resolution
 uniform sampler2D ambientMap;  // the ambient share of that light per channel (G-buffer 3)
 uniform sampler2D depthMap;    // linear depth at full resolution (G-buffer 1)
 uniform float aoOnly;
+uniform float aoPresent;       // 0 in the plain chain (AO off, smoke on): AO is 1 everywhere
 uniform float depthSharpness;  // as the blur's
+uniform vec2 projScale;        // projection matrix [0][0] and [1][1]
+uniform float flipY;           // 1 when render textures are stored upside down
+uniform mat4 inverseView;      // view -> world
 in vec2 vUv;
 out vec4 fragColour;
+#include "smoke_march.glsl"
 const float kSameSurface = 0.02;  // relative depth: 2 cm at 1 m, 20 cm at 10 m
 
 // Joint bilateral upsampling (Kopf et al. 2007): the four AO texels around this pixel, with their
@@ -41,17 +46,31 @@ void main()
     ivec2 pixel = clamp(ivec2(vUv * vec2(size)), ivec2(0), size - 1);
     float depth = texelFetch(depthMap, pixel, 0).r;
     float ao = 1.0;
-    if (depth > 0.0) {
+    if (depth > 0.0 && aoPresent > 0.5) {
         // One bilinear tap gives the AO and the depth of the four texels averaged: where that depth
         // matches this pixel's (no silhouette among them, most of the frame) it is the answer.
         vec2 blended = texture(aoMap, vUv).rg;
         ao = abs(blended.g - depth) < kSameSurface * depth ? blended.r : upsampledAo(depth);
     }
     if (aoOnly > 0.5) { fragColour = vec4(vec3(ao), 1.0); return; }
+
+    // Smoke in front of the surface (or the sky) seen here.
+    vec3 smokeLight = vec3(0.0);
+    float smokeT = 1.0;
+    if (smokeCount > 0.5) {
+        vec2 ndc = vec2(vUv.x, flipY > 0.5 ? 1.0 - vUv.y : vUv.y) * 2.0 - 1.0;
+        vec3 viewDir = normalize(vec3(ndc / projScale, -1.0));
+        float maxT = depth > 0.0 ? depth / -viewDir.z : 1e4;
+        // Interleaved gradient noise (Jimenez 2014): the start jitter, stable from frame to frame.
+        float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+        marchSmoke(inverseView[3].xyz, normalize(mat3(inverseView) * viewDir), maxT, jitter, smokeLight, smokeT);
+    }
+
     vec3 shown = texelFetch(colourMap, pixel, 0).rgb;
-    if (ao > 0.998) { fragColour = vec4(shown, 1.0); return; }  // nothing to take off
+    if (ao > 0.998 && smokeT > 0.999) { fragColour = vec4(shown, 1.0); return; }  // nothing to change
     // 1/1024: white stays finite when undone (1 - exp(-x) reaches 1 - 1/1024 at x = 6.9)
     vec3 light = -log(max(vec3(1.0) - pow(shown, vec3(2.2)), vec3(1.0 / 1024.0)));
     light *= vec3(1.0) - texelFetch(ambientMap, pixel, 0).rgb * (1.0 - ao);
+    light = light * smokeT + smokeLight;
     fragColour = vec4(pow(vec3(1.0) - exp(-light), vec3(1.0 / 2.2)), 1.0);
 }

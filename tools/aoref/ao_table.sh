@@ -97,13 +97,15 @@ if [ -z "${NO_COST:-}" ]; then
 fi
 cat "$table"
 
-# The side-by-side image of the modes (for the READMEs): the lit scene, each mode's AO, the reference.
-if [ -x build/tools/aoref/obscura_side_by_side ] && [ -f "$out/sibenik_nave_reference.png" ]; then
-  pose="0 1.65 0 90 0"
-  "$game" --headless --ticks 1 --width $W --height $H --level tests/ssao/views/sibenik.map --start-pose "$pose" \
-    --hud off --screenshot "$out/sibenik_nave_scene.png" >/dev/null
-  images=("$out/sibenik_nave_scene.png")
-  for c in "${configs[@]}"; do images+=("$out/sibenik_nave_${c%%|*}.png"); done
-  build/tools/aoref/obscura_side_by_side "$out/ao_modes_sibenik.png" "${images[@]}" "$out/sibenik_nave_reference.png"
-  echo "side by side: $out/ao_modes_sibenik.png (scene | ${configs[*]%%|*} | ray-traced reference)"
-fi
+# The side-by-side images of the modes (for the READMEs): the lit scene, each configuration's AO and
+# the ray-traced reference, in a grid of 3 columns, for the courtyard and the Sibenik nave.
+for v in "courtyard|media/levels/arena.map|26 1.65 -24 -30 -10" "sibenik_nave|tests/ssao/views/sibenik.map|0 1.65 0 90 0"; do
+  IFS='|' read -r name level pose <<<"$v"
+  [ -f "$out/${name}_reference.png" ] || continue
+  "$game" --headless --ticks 1 --width $W --height $H --level "$level" --start-pose "$pose" --hud off \
+    --screenshot "$out/${name}_scene.png" >/dev/null
+  images=("$out/${name}_scene.png")
+  for c in "${configs[@]}"; do images+=("$out/${name}_${c%%|*}.png"); done
+  build/tools/aoref/obscura_side_by_side --columns 3 "$out/ao_modes_$name.png" "${images[@]}" "$out/${name}_reference.png"
+  echo "side by side: $out/ao_modes_$name.png (scene | ${configs[*]%%|*} | ray-traced reference)"
+done
