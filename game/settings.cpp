@@ -139,7 +139,7 @@ struct Option {
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
-                                    "timedemo", "config", "data-dir", "log", "debug-max-render-targets", "smoke-at"};
+                                    "timedemo", "config", "data-dir", "log", "debug-max-render-targets"};
 
 struct SettingsParser::Impl {
     std::vector<Option> options;
@@ -229,7 +229,7 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                    if (!(is >> x)) fail(where, "start-pose", "'" + v + "', expected 'x y z yaw pitch'");
                s.startPose = v;
            }});
-    I.add({"smoke-at", "release a smoke grenade's cloud at 'x y z' (metres) when the level starts",
+    I.add({"smoke-at", "release a smoke grenade's cloud at 'x y z' (metres): at the start, or when a replay sets it",
            [](S& s, W v, W where) {
                std::istringstream is(v);
                double d[3];

@@ -74,7 +74,8 @@ struct Settings {
     // Start the player's eye here instead of the level's player start: x y z (metres, world),
     // yaw pitch (degrees, the game's convention). Empty: the level's start.
     std::string startPose;
-    // Release a smoke grenade's cloud at "x y z" (metres) when the level starts (tests, screenshots).
+    // Release a smoke grenade's cloud at "x y z" (metres) when the level starts, or at the tick a
+    // replay `set`s it (tests, screenshots).
     std::string smokeAt;
 
     Settings();  // fills default bindings

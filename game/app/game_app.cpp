@@ -53,6 +53,14 @@ constexpr long kDefaultHeadlessTicks = 300;
 constexpr unsigned kHiddenWindowSize = 64;
 
 double degToRad(double d) { return d * 3.14159265358979323846 / 180.0; }
+
+// "x y z" (validated by the settings table already).
+Vec3 parseVec3(const std::string& text) {
+    std::istringstream is(text);
+    Vec3 p;
+    is >> p.x >> p.y >> p.z;
+    return p;
+}
 }  // namespace
 
 GameApp::GameApp(Settings settings, const SettingsParser& parser)
@@ -233,12 +241,7 @@ void GameApp::createScene() {
     sim_ = std::make_unique<sim::Simulation>(*level_, config, modelMeshes);
     smoke_ = std::make_unique<GameSmoke>(*level_, modelMeshes, render::computeLevelLighting(*level_).sunDirection,
                                          1.0 / settings_.tickRate);
-    if (!settings_.smokeAt.empty()) {
-        std::istringstream is(settings_.smokeAt);
-        Vec3 p;
-        is >> p.x >> p.y >> p.z;
-        smoke_->spawn(p);
-    }
+    if (!settings_.smokeAt.empty()) smoke_->spawn(parseVec3(settings_.smokeAt));
     previousPlayer_ = std::make_unique<sim::PlayerState>(sim_->player());
     props_ = std::make_unique<render::PropView>(*scene_, *materials_);
 
@@ -563,6 +566,8 @@ void GameApp::applySetting(const std::string& key, const std::string& value, con
         camera_->setFOVy(Ogre::Radian(static_cast<Ogre::Real>(2.0 * std::atan(std::tan(degToRad(settings_.fov) * 0.5) / aspect))));
     } else if (key.rfind("ssao", 0) == 0 || key == "ao-only") {
         applyAoSettings();
+    } else if (key == "smoke-at") {
+        smoke_->spawn(parseVec3(settings_.smokeAt));
     } else if (key == "debug-panel") {
         hud_->setPanelVisible(settings_.showDebugPanel);
     }
