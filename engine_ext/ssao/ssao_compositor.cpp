@@ -11,7 +11,7 @@ namespace obscura::ssao {
 
 namespace {
 // Pass identifiers (media/ssao/ssao.compositor).
-constexpr Ogre::uint32 kBlurX = 1, kBlurY = 2, kAoPass = 10, kComposite = 20, kPlainComposite = 21;
+constexpr Ogre::uint32 kBlurX = 1, kBlurY = 2, kAoPass = 10, kComposite = 20, kPlainComposite = 21, kSmokeMarch = 30;
 constexpr std::size_t kMaxVolumes = 4;   // the composite's smoke samplers
 constexpr int kMaxSamples = 32;          // the shaders' kernel[] size
 constexpr int kNoiseSize = 4;            // 4x4 interleaved rotations: the blur's 5 taps cover it
@@ -295,6 +295,7 @@ void AmbientOcclusion::notifyMaterialRender(Ogre::uint32 passId, Ogre::MaterialP
     } else if (passId == kComposite || passId == kPlainComposite) {
         fp->setNamedConstant("aoOnly", aoOnly_ && passId == kComposite ? 1.0f : 0.0f);
         fp->setNamedConstant("aoPresent", passId == kComposite ? 1.0f : 0.0f);
+    } else if (passId == kSmokeMarch) {
         bindVolumes(*pass, *fp);
     }
 }

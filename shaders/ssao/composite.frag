@@ -11,12 +11,9 @@ uniform sampler2D depthMap;    // linear depth at full resolution (G-buffer 1)
 uniform float aoOnly;
 uniform float aoPresent;       // 0 in the plain chain (AO off, smoke on): AO is 1 everywhere
 uniform float depthSharpness;  // as the blur's
-uniform vec2 projScale;        // projection matrix [0][0] and [1][1]
-uniform float flipY;           // 1 when render textures are stored upside down
-uniform mat4 inverseView;      // view -> world
+uniform sampler2D smokeMap;     // rgb = smoke light (HDR), a = transmittance, at half resolution
 in vec2 vUv;
 out vec4 fragColour;
-#include "smoke_march.glsl"
 const float kSameSurface = 0.02;  // relative depth: 2 cm at 1 m, 20 cm at 10 m
 
 // Joint bilateral upsampling (Kopf et al. 2007): the four AO texels around this pixel, with their
@@ -38,6 +35,32 @@ float upsampledAo(float depth)
     return sum / weights;
 }
 
+// The smoke at a silhouette: the four half-resolution texels weighted by how close the depth they
+// were marched against (the full-resolution depth at their centre) is to this pixel's, so a near
+// object in front of a cloud keeps a clean edge.
+vec4 upsampledSmoke(float depth, vec4 blended)
+{
+    vec2 size = vec2(textureSize(smokeMap, 0));
+    vec2 st = vUv * size - 0.5;
+    vec2 base = floor(st), f = st - base;
+    ivec2 full = textureSize(depthMap, 0);
+    vec4 sum = vec4(0.0);
+    float weights = 0.0;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x) {
+            ivec2 texel = clamp(ivec2(base) + ivec2(x, y), ivec2(0), ivec2(size) - 1);
+            vec2 centre = (vec2(texel) + 0.5) / size;
+            float d = texelFetch(depthMap, clamp(ivec2(centre * vec2(full)), ivec2(0), full - 1), 0).r;
+            float bilinear = (x == 0 ? 1.0 - f.x : f.x) * (y == 0 ? 1.0 - f.y : f.y);
+            // Sky (depth 0) counts as very far.
+            float dz = abs((d > 0.0 ? d : 1e4) - (depth > 0.0 ? depth : 1e4)) / max(depth > 0.0 ? depth : 1e4, 1e-3);
+            float w = bilinear * exp(-dz * depthSharpness) + 1e-4;
+            sum += texelFetch(smokeMap, texel, 0) * w;
+            weights += w;
+        }
+    return sum / weights;
+}
+
 void main()
 {
     // From the quad's uv, not gl_FragCoord: the viewport may be a window while the G-buffer is a
@@ -54,17 +77,11 @@ void main()
     }
     if (aoOnly > 0.5) { fragColour = vec4(vec3(ao), 1.0); return; }
 
-    // Smoke in front of the surface (or the sky) seen here.
-    vec3 smokeLight = vec3(0.0);
-    float smokeT = 1.0;
-    if (smokeCount > 0.5) {
-        vec2 ndc = vec2(vUv.x, flipY > 0.5 ? 1.0 - vUv.y : vUv.y) * 2.0 - 1.0;
-        vec3 viewDir = normalize(vec3(ndc / projScale, -1.0));
-        float maxT = depth > 0.0 ? depth / -viewDir.z : 1e4;
-        // Interleaved gradient noise (Jimenez 2014): the start jitter, stable from frame to frame.
-        float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-        marchSmoke(inverseView[3].xyz, normalize(mat3(inverseView) * viewDir), maxT, jitter, smokeLight, smokeT);
-    }
+    // Smoke in front of the surface (or the sky) seen here, from the half-resolution march.
+    vec4 smoke = texture(smokeMap, vUv);
+    if (smoke.a < 0.999) smoke = upsampledSmoke(depth, smoke);
+    vec3 smokeLight = smoke.rgb;
+    float smokeT = smoke.a;
 
     vec3 shown = texelFetch(colourMap, pixel, 0).rgb;
     if (ao > 0.998 && smokeT > 0.999) { fragColour = vec4(shown, 1.0); return; }  // nothing to change
