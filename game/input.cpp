@@ -34,6 +34,9 @@ sim::PlayerCommand InputState::takeCommand() {
     c.jump = isDown(Action::Jump);
     c.crouch = isDown(Action::Crouch);
     c.sprint = isDown(Action::Sprint);
+    c.fire = isDown(Action::Fire);
+    c.reload = isDown(Action::Reload);
+    c.throwHeld = isDown(Action::Throw);
     const double k = kRadiansPerCount * settings_.mouseSensitivity;
     // Mouse right turns right (negative yaw about +Y); mouse down looks down unless inverted.
     c.yawDelta = static_cast<float>(-static_cast<double>(mouseDx_) * k);

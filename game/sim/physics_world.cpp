@@ -23,6 +23,13 @@ constexpr double kDefaultCrateSize = 0.75, kDefaultCrateMass = 20;
 // Accepted crate ranges: below 5 cm the box is smaller than the solver's contact tolerances;
 // beyond 10 m / 10 t it is level geometry, not a prop.
 constexpr double kMinCrateSize = 0.05, kMaxCrateSize = 10, kMaxCrateMass = 10000;
+// prop_barrel defaults: an empty oil drum, 0.3 m radius, 0.9 m tall, 12 kg (a rifle shot near
+// its top tips it; a player can push it).
+constexpr double kDefaultBarrelRadius = 0.3, kDefaultBarrelHeight = 0.9, kDefaultBarrelMass = 12;
+// Projectiles (grenades): bounce a little (0.35: a steel canister on concrete), roll (friction
+// 0.6) and settle: rolling friction and damping stop a rolling grenade within a few metres.
+constexpr btScalar kProjectileRestitution = 0.35f, kProjectileFriction = 0.6f, kProjectileRollingFriction = 0.02f;
+constexpr btScalar kProjectileLinearDamping = 0.1f, kProjectileAngularDamping = 0.3f;
 
 std::string where(const map::Level& level, const map::SourcePos& pos) {
     return (level.sourcePath.empty() ? std::string("<level>") : level.sourcePath) + ":" + std::to_string(pos.line) +
@@ -97,6 +104,7 @@ PhysicsWorld::PhysicsWorld(double gravity)
 PhysicsWorld::~PhysicsWorld() {
     // Bodies leave the world before it dies; the members then die bodies first, shapes and meshes
     // after them, the world and its parts last (reverse declaration order).
+    for (auto& [id, p] : projectiles_) world_->removeRigidBody(p.body.get());
     for (auto it = dynamic_.rbegin(); it != dynamic_.rend(); ++it) world_->removeRigidBody(it->get());
     for (auto it = static_.rbegin(); it != static_.rend(); ++it) world_->removeRigidBody(it->get());
 }
@@ -105,12 +113,19 @@ void PhysicsWorld::addLevel(const map::Level& level) {
     for (const auto& b : level.brushes)
         if (b.solid) addStaticHull(b.hullPoints, where(level, b.pos));
     for (const auto& e : level.entities) {
-        if (e.classname != "prop_crate") continue;
-        if (!e.hasOrigin) throw SimError(where(level, e.pos) + ": prop_crate without an 'origin'");
-        const double size = numberKey(level, e, "size", kDefaultCrateSize, kMinCrateSize, kMaxCrateSize, "metres");
-        const double mass = numberKey(level, e, "mass", kDefaultCrateMass, 0, kMaxCrateMass, "kg");
-        const double h = size / 2;
-        addDynamicBox(e.origin + Vec3{0, h, 0}, {h, h, h}, mass, e.yaw);
+        if (e.classname != "prop_crate" && e.classname != "prop_barrel") continue;
+        if (!e.hasOrigin) throw SimError(where(level, e.pos) + ": " + e.classname + " without an 'origin'");
+        if (e.classname == "prop_crate") {
+            const double size = numberKey(level, e, "size", kDefaultCrateSize, kMinCrateSize, kMaxCrateSize, "metres");
+            const double mass = numberKey(level, e, "mass", kDefaultCrateMass, 0, kMaxCrateMass, "kg");
+            const double h = size / 2;
+            addDynamicBox(e.origin + Vec3{0, h, 0}, {h, h, h}, mass, e.yaw);
+        } else {
+            const double r = numberKey(level, e, "radius", kDefaultBarrelRadius, kMinCrateSize, kMaxCrateSize, "metres");
+            const double height = numberKey(level, e, "height", kDefaultBarrelHeight, kMinCrateSize, kMaxCrateSize, "metres");
+            const double mass = numberKey(level, e, "mass", kDefaultBarrelMass, 0, kMaxCrateMass, "kg");
+            addDynamicCylinder(e.origin + Vec3{0, height / 2, 0}, r, height / 2, mass, e.yaw);
+        }
     }
 }
 
@@ -170,9 +185,7 @@ void PhysicsWorld::addStaticTriangleMesh(const TriangleMesh& mesh) {
     addStatic(std::move(shape));
 }
 
-int PhysicsWorld::addDynamicBox(const Vec3& centre, const Vec3& halfExtents, double mass, double yaw) {
-    auto shape = std::make_unique<btBoxShape>(toBt(halfExtents));
-    shape->initializePolyhedralFeatures();
+btRigidBody* PhysicsWorld::addDynamic(std::unique_ptr<btCollisionShape> shape, const Vec3& centre, double mass, double yaw) {
     btVector3 inertia(0, 0, 0);
     shape->calculateLocalInertia(static_cast<btScalar>(mass), inertia);
     const btTransform t(btQuaternion(btVector3(0, 1, 0), static_cast<btScalar>(yaw)), toBt(centre));
@@ -186,10 +199,63 @@ int PhysicsWorld::addDynamicBox(const Vec3& centre, const Vec3& halfExtents, dou
     const int index = static_cast<int>(dynamic_.size() - 1);
     dynamic_.back()->setUserIndex(index);
     world_->addRigidBody(dynamic_.back().get());
-    halfExtents_.push_back(halfExtents);
     shapes_.push_back(std::move(shape));
     motionStates_.push_back(std::move(motion));
-    return index;
+    return dynamic_.back().get();
+}
+
+int PhysicsWorld::addDynamicBox(const Vec3& centre, const Vec3& halfExtents, double mass, double yaw) {
+    auto shape = std::make_unique<btBoxShape>(toBt(halfExtents));
+    shape->initializePolyhedralFeatures();
+    addDynamic(std::move(shape), centre, mass, yaw);
+    halfExtents_.push_back(halfExtents);
+    bodyShapes_.push_back(BodyShape::Box);
+    return static_cast<int>(dynamic_.size() - 1);
+}
+
+int PhysicsWorld::addDynamicCylinder(const Vec3& centre, double radius, double halfHeight, double mass, double yaw) {
+    addDynamic(std::make_unique<btCylinderShape>(toBt(Vec3{radius, halfHeight, radius})), centre, mass, yaw);
+    halfExtents_.push_back({radius, halfHeight, radius});
+    bodyShapes_.push_back(BodyShape::Cylinder);
+    return static_cast<int>(dynamic_.size() - 1);
+}
+
+int PhysicsWorld::addProjectile(const Vec3& centre, double radius, double mass, const Vec3& velocity) {
+    Projectile p;
+    p.shape = std::make_unique<btSphereShape>(static_cast<btScalar>(radius));
+    btVector3 inertia(0, 0, 0);
+    p.shape->calculateLocalInertia(static_cast<btScalar>(mass), inertia);
+    p.motion = std::make_unique<btDefaultMotionState>(btTransform(btQuaternion::getIdentity(), toBt(centre)));
+    btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(mass), p.motion.get(), p.shape.get(), inertia);
+    info.m_friction = kProjectileFriction;
+    info.m_rollingFriction = kProjectileRollingFriction;
+    info.m_restitution = kProjectileRestitution;
+    info.m_linearDamping = kProjectileLinearDamping;
+    info.m_angularDamping = kProjectileAngularDamping;
+    p.body = std::make_unique<btRigidBody>(info);
+    p.body->setLinearVelocity(toBt(velocity));
+    // Continuous collision: swept as a sphere of its radius once it moves more than half of it a tick.
+    p.body->setCcdMotionThreshold(static_cast<btScalar>(radius * 0.5));
+    p.body->setCcdSweptSphereRadius(static_cast<btScalar>(radius * 0.9));
+    p.body->setUserIndex(-2);  // not a prop: rays report it as static-like (-1 is level geometry)
+    p.body->setActivationState(DISABLE_DEACTIVATION);
+    world_->addRigidBody(p.body.get());
+    const int id = nextProjectile_++;
+    projectiles_.emplace(id, std::move(p));
+    return id;
+}
+
+void PhysicsWorld::removeProjectile(int id) {
+    const auto it = projectiles_.find(id);
+    if (it == projectiles_.end()) return;
+    world_->removeRigidBody(it->second.body.get());
+    projectiles_.erase(it);
+}
+
+std::vector<int> PhysicsWorld::projectileIds() const {
+    std::vector<int> ids;
+    for (const auto& [id, p] : projectiles_) ids.push_back(id);
+    return ids;
 }
 
 void PhysicsWorld::step(double dt) {

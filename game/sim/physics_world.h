@@ -1,8 +1,10 @@
 // The Bullet world, owned RAII: collision configuration, dispatcher, broadphase, solver, world,
 // and every shape, mesh, motion state and body created through it (bodies leave the world before
 // anything they point at dies). Static level geometry: one btConvexHullShape per solid brush,
-// btBvhTriangleMeshShape for misc_model triangles. Dynamic props: `prop_crate` boxes. Plus the
-// queries the game needs: convex sweeps (the player's capsule) and rays (hitscan).
+// btBvhTriangleMeshShape for misc_model triangles. Dynamic props: `prop_crate` boxes and
+// `prop_barrel` cylinders. Projectiles (grenades): spheres with continuous collision detection,
+// added and removed during play. Plus the queries the game needs: convex sweeps (the player's
+// capsule) and rays (hitscan).
 // Stepped with a fixed dt and one substep, Bullet 3.24 is bit-identical run to run.
 #pragma once
 
@@ -12,6 +14,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -36,7 +39,7 @@ struct RayHit {
     Vec3 point;
     Vec3 normal;            // unit, facing the ray's origin
     double fraction = 1;    // 0..1 along the ray
-    int dynamicBody = -1;   // index of the dynamic body hit, or -1 for static geometry
+    int dynamicBody = -1;   // index of the dynamic body hit, -1 for static geometry, -2 a projectile
 };
 
 struct SweepHit {
@@ -67,8 +70,19 @@ public:
     void addStaticHull(const std::vector<Vec3>& points, const std::string& where = "hull");
     // World-space triangles (misc_model colliders). Throws SimError on an out-of-range index.
     void addStaticTriangleMesh(const TriangleMesh& mesh);
+    enum class BodyShape { Box, Cylinder };
     // Returns the index of the new dynamic body.
     int addDynamicBox(const Vec3& centre, const Vec3& halfExtents, double mass, double yaw);
+    // An upright cylinder (Y axis): radius, half height.
+    int addDynamicCylinder(const Vec3& centre, double radius, double halfHeight, double mass, double yaw);
+
+    // A projectile: a sphere with continuous collision detection (it never tunnels through a thin
+    // wall at throwing speed). Returns its id; ids are never reused.
+    int addProjectile(const Vec3& centre, double radius, double mass, const Vec3& velocity);
+    void removeProjectile(int id);
+    btRigidBody& projectile(int id) const { return *projectiles_.at(id).body; }
+    // Ids of the live projectiles, oldest first.
+    std::vector<int> projectileIds() const;
 
     void step(double dt);
 
@@ -88,6 +102,7 @@ public:
     std::size_t dynamicBodyCount() const { return dynamic_.size(); }
     btRigidBody& dynamicBody(std::size_t i) const { return *dynamic_.at(i); }
     Vec3 dynamicHalfExtents(std::size_t i) const { return halfExtents_.at(i); }
+    BodyShape dynamicShape(std::size_t i) const { return bodyShapes_.at(i); }
 
 private:
     void addStatic(std::unique_ptr<btCollisionShape> shape);
@@ -106,6 +121,15 @@ private:
     std::vector<std::unique_ptr<btRigidBody>> static_;
     std::vector<std::unique_ptr<btRigidBody>> dynamic_;
     std::vector<Vec3> halfExtents_;
+    std::vector<BodyShape> bodyShapes_;
+    struct Projectile {
+        std::unique_ptr<btSphereShape> shape;
+        std::unique_ptr<btDefaultMotionState> motion;
+        std::unique_ptr<btRigidBody> body;
+    };
+    std::map<int, Projectile> projectiles_;  // by id: iteration in creation order
+    int nextProjectile_ = 0;
+    btRigidBody* addDynamic(std::unique_ptr<btCollisionShape> shape, const Vec3& centre, double mass, double yaw);
 };
 
 }  // namespace obscura::sim

@@ -20,6 +20,9 @@ struct PlayerCommand {
     float forward = 0, right = 0;  // -1..1
     bool jump = false, crouch = false, sprint = false;
     float yawDelta = 0, pitchDelta = 0;  // radians this tick
+    bool fire = false;       // trigger held
+    bool reload = false;     // reload key held (acts on the press)
+    bool throwHeld = false;  // grenade key held: charging; the release throws
 };
 
 struct PlayerTuning {

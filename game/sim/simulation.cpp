@@ -22,6 +22,7 @@ Simulation::Simulation(const map::Level& level, const SimConfig& config, const s
     physics_->addLevel(level);
     for (const auto& m : modelMeshes) physics_->addStaticTriangleMesh(m);
     controller_ = std::make_unique<PlayerController>(*physics_, tuning);
+    combat_ = std::make_unique<Combat>(level, *physics_, config.tickRate);
     if (config.overrideStart)
         player_ = controller_->spawn(config.startFeet, config.startYaw, config.startPitch);
     else
@@ -29,8 +30,11 @@ Simulation::Simulation(const map::Level& level, const SimConfig& config, const s
 }
 
 void Simulation::step(const PlayerCommand& cmd) {
+    events_.clear();
+    const PlayerState before = player_;
     controller_->step(player_, cmd, dt());
     physics_->step(dt());
+    combat_->step(cmd, player_, before, rng_, events_);
     ++tick_;
 }
 
@@ -39,7 +43,9 @@ std::vector<Simulation::BodyPose> Simulation::bodyPoses() const {
     for (std::size_t i = 0; i < physics_->dynamicBodyCount(); ++i) {
         const btTransform& t = physics_->dynamicBody(i).getWorldTransform();
         const btQuaternion q = t.getRotation();
-        out.push_back({fromBt(t.getOrigin()), q.x(), q.y(), q.z(), q.w(), physics_->dynamicHalfExtents(i)});
+        const bool cylinder = physics_->dynamicShape(i) == PhysicsWorld::BodyShape::Cylinder;
+        out.push_back({fromBt(t.getOrigin()), q.x(), q.y(), q.z(), q.w(), physics_->dynamicHalfExtents(i),
+                       cylinder ? BodyPose::Shape::Cylinder : BodyPose::Shape::Box});
     }
     return out;
 }
@@ -62,6 +68,7 @@ std::uint64_t Simulation::stateHash() const {
         for (btScalar v : {o.x(), o.y(), o.z(), q.x(), q.y(), q.z(), q.w(), lv.x(), lv.y(), lv.z(), av.x(), av.y(), av.z()})
             h.add(static_cast<float>(v));
     }
+    combat_->hash(h);
     h.add(rng_.state());
     h.add(rng_.increment());
     return h.value();

@@ -6,8 +6,10 @@
 #include "core/rng.h"
 #include "core/triangle_mesh.h"
 #include "map/level.h"
+#include "sim/combat.h"
 #include "sim/physics_world.h"
 #include "sim/player_controller.h"
+#include "sim/sim_events.h"
 
 #include <cstdint>
 #include <memory>
@@ -28,9 +30,11 @@ class Simulation {
 public:
     // A dynamic body's pose for rendering.
     struct BodyPose {
+        enum class Shape { Box, Cylinder };  // cylinder: radius = halfExtents.x, half height = y, axis Y
         Vec3 position;
         double qx = 0, qy = 0, qz = 0, qw = 1;
         Vec3 halfExtents;
+        Shape shape = Shape::Box;
     };
 
     // modelMeshes: world-space triangles of the level's misc_models (static colliders).
@@ -47,6 +51,14 @@ public:
     const PhysicsWorld& physics() const { return *physics_; }
     std::vector<BodyPose> bodyPoses() const;
 
+    // Combat (sim/combat.h) and what happened during the last step.
+    const std::vector<SimEvent>& events() const { return events_; }
+    const WeaponState& weapon() const { return combat_->weapon(); }
+    const std::vector<TargetState>& targets() const { return combat_->targets(); }
+    int score() const { return combat_->score(); }
+    double throwCharge() const { return combat_->throwCharge(); }
+    std::vector<GrenadeState> grenades() const { return combat_->grenades(); }
+
     // Hash of everything that evolves: tick, player, every dynamic body, the RNG.
     std::uint64_t stateHash() const;
     std::string stateHashHex() const;
@@ -55,6 +67,8 @@ private:
     SimConfig config_;
     std::unique_ptr<PhysicsWorld> physics_;
     std::unique_ptr<PlayerController> controller_;
+    std::unique_ptr<Combat> combat_;
+    std::vector<SimEvent> events_;
     PlayerState player_;
     Rng rng_;
     std::uint64_t tick_ = 0;

@@ -220,6 +220,16 @@ for x, y, z, l in [(6, 25, 3.5, 280), (12, 31, 3.5, 280), (9, 45, 5.5, 320), (9,
     entity("light", origin=point(x, y, z), light=str(l), _color="1 0.92 0.8")  # warm indoor lamps
 for x in (16, 26, 36, 46):
     entity("light", origin=point(x, 6, 4.5), light="300", _color="0.95 0.97 1")  # cool range strip lights
+# The firing range: the shooter stands behind the booth counter (x < 14) looking east. Pop-up boards at
+# 10, 20 and 30 m (they fall when shot three times and rise after 3 s), two boards sliding across
+# the range at 15 and 25 m, all facing west (angle 180). Props to knock over by the booth.
+for x, y in [(24, 6), (34, 4.5), (44, 7.5)]:
+    entity("target_popup", origin=point(x, y, 0), angle="180", width="0.6", height="1.6", reset="3")
+for x, speed in [(29, "1.5"), (39, "2.5")]:
+    entity("target_moving", origin=point(x, 6, 0), angle="180", width="0.6", height="1.6", distance="4", speed=speed)
+for x, y in [(16.5, 8.25), (17.375, 8.25), (20, 7.5)]:
+    entity("prop_barrel", origin=point(x, y, 0), radius="0.3", height="0.9")
+entity("prop_crate", origin=point(18.5, 4.25, 0), size="0.75")
 # A second spawn point in the courtyard's south-east, clear of the sign's 8 m apron.
 entity("info_player_deathmatch", origin=point(40, 24, 0.75), angle="90")
 
