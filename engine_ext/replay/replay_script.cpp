@@ -91,8 +91,18 @@ public:
             if (v < kMinTickRate || v > kMaxTickRate)
                 fail("tick rate " + w[1] + " is out of range, expected " + shortest(kMinTickRate) + " to " + shortest(kMaxTickRate));
             s.tickRate = v;
+        } else if (w[0] == "start") {
+            arity(w, 6, "start <x> <y> <z> <yaw> <pitch>");
+            std::string pose;
+            for (std::size_t i = 1; i < 6; ++i) {
+                char* end = nullptr;
+                const double v = std::strtod(w[i].c_str(), &end);
+                if (*end || !std::isfinite(v)) fail("'" + w[i] + "' is not a number, expected 'start <x> <y> <z> <yaw> <pitch>'");
+                pose += (i > 1 ? " " : "") + w[i];
+            }
+            s.start = pose;
         } else {
-            fail("unknown header '" + w[0] + "', expected level, seed, resolution, tickrate or '<tick> <command>'");
+            fail("unknown header '" + w[0] + "', expected level, seed, resolution, tickrate, start or '<tick> <command>'");
         }
     }
 
@@ -267,6 +277,7 @@ std::string formatScript(const Script& s) {
     o << "obscura-replay " << kVersion << "\n";
     o << "level " << s.level << "\nseed " << s.seed << "\nresolution " << s.width << " " << s.height << "\n";
     o << "tickrate " << shortest(s.tickRate) << "\n";
+    if (!s.start.empty()) o << "start " << s.start << "\n";
     for (const auto& c : s.commands) {
         o << c.tick << " ";
         switch (c.type) {

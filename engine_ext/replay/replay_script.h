@@ -54,6 +54,9 @@ struct Script {
     std::uint64_t seed = 1;
     int width = 640, height = 360;
     double tickRate = 60;
+    // Optional `start x y z yaw pitch`: the eye (metres) and view (degrees) instead of the level's
+    // player start, as --start-pose takes them. Empty: the level's start.
+    std::string start;
     std::vector<Command> commands;
 
     // The last tick to simulate: the `end` command's, else the last command's.
@@ -64,7 +67,7 @@ struct Script {
     // Same header and commands; the file name and source line numbers are not compared.
     bool operator==(const Script& o) const {
         return version == o.version && level == o.level && seed == o.seed && width == o.width && height == o.height &&
-               tickRate == o.tickRate && commands == o.commands;
+               tickRate == o.tickRate && start == o.start && commands == o.commands;
     }
     bool operator!=(const Script& o) const { return !(*this == o); }
 };

@@ -232,3 +232,16 @@ TEST(ReplayRecorder, ButtonsAndKeysParseBackToTheSameCommands) {
     EXPECT_EQ(back.endTick(), 7);
     EXPECT_THROW(r.button(4, "side", true), ScriptError);
 }
+
+TEST(ReplayScript, OptionalStartPoseRoundTripsAndBadOnesNameTheLine) {
+    const std::string text = "obscura-replay 1\nlevel a.map\nstart 12 1.65 -6 -90 -2\n0 end\n";
+    const auto s = obscura::replay::parseScript(text, "t.replay");
+    EXPECT_EQ(s.start, "12 1.65 -6 -90 -2");
+    EXPECT_EQ(obscura::replay::parseScript(obscura::replay::formatScript(s), "u.replay"), s);
+    try {
+        obscura::replay::parseScript("obscura-replay 1\nlevel a.map\nstart 1 2 x 4 5\n", "bad.replay");
+        FAIL() << "accepted a bad start pose";
+    } catch (const obscura::replay::ScriptError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.replay:3"), std::string::npos) << e.what();
+    }
+}

@@ -99,7 +99,13 @@ int main(int argc, char** argv) {
     }
     if (std::getenv("OBSCURA_REBASELINE")) rebaseline = true;
 
-    const replay::Script script = replay::loadScript(replayPath);
+    replay::Script script;
+    try {
+        script = replay::loadScript(replayPath);
+    } catch (const replay::ScriptError& e) {
+        std::cerr << "obscura_replaytest: " << e.what() << "\n";
+        return 2;
+    }
     const std::string testName = fs::path(replayPath).stem().string();
     fs::remove_all(outDir);
     std::string firstHashes, firstRenderer;
