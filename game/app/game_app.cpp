@@ -1,7 +1,10 @@
 // See game_app.h.
 #include "app/game_app.h"
 
+#include "app/combat_view.h"
+#include "app/game_audio.h"
 #include "app/game_smoke.h"
+#include "app/pause_menu.h"
 #include "app/sdl_keys.h"
 #include "core/fixed_step.h"
 #include "timedemo_stats.h"
@@ -20,6 +23,7 @@
 #include "ssao/ssao_modes.h"
 
 #include <Ogre.h>
+#include <OgreImGuiInputListener.h>
 #include <OgreOverlaySystem.h>
 #include <OgreRTShaderSystem.h>
 #include <SDL2/SDL.h>
@@ -146,8 +150,12 @@ void GameApp::locateResources() {
 
 void GameApp::shutdown() {
     // Order matters (see shared/README): our OGRE objects first, then RTSS, overlays, root.
+    imguiInput_.reset();
     hud_.reset();
+    menu_.reset();
     smoke_.reset();
+    combat_.reset();
+    audio_.reset();
     ao_.reset();
     props_.reset();
     levelGeometry_.reset();
@@ -262,8 +270,22 @@ void GameApp::createScene() {
                             render::kSkyVisibilityFlag);
     applyAoSettings();
 
+    combat_ = std::make_unique<CombatView>(*scene_, *materials_, *cameraNode_);
+    // Sounds load once, here (a malformed WAV stops the game at load time, naming the file); with
+    // no audio device the game runs silent after one warning line.
+    audio_ = std::make_unique<GameAudio>(settings_, dataPath("media/sounds"));
+
     hud_ = std::make_unique<render::Hud>();
     hud_->setPanelVisible(settings_.showDebugPanel);
+    PauseMenu::Hooks hooks;
+    hooks.set = [this](const std::string& key, const std::string& value) { applySetting(key, value, "menu"); };
+    hooks.resize = [this](int w, int h) { resizeWindow(w, h); };
+    hooks.resume = [this] { setMenuOpen(false); };
+    hooks.quit = [this] { quit_ = true; };
+    hooks.click = [this] { audio_->uiClick(); };
+    menu_ = std::make_unique<PauseMenu>(settings_, hooks);
+    imguiInput_ = std::make_unique<OgreBites::ImGuiInputListener>();  // after the HUD made ImGui's context
+    hud_->setMenu([this] { menu_->draw(); });
     hud_->addPanelSection("Player", [this] {
         const auto& p = sim_->player();
         ImGui::Text("tick %llu", static_cast<unsigned long long>(sim_->tick()));
@@ -312,18 +334,21 @@ void GameApp::stepSimulation() {
     handleTriggeredActions();
     *previousPlayer_ = sim_->player();
     sim_->step(input_.takeCommand());
-    smoke_->onTick(sim_->player());
+    // One way: what happened this tick goes to sound, effects and the HUD.
+    const auto& events = sim_->events();
+    audio_->onEvents(events);
+    combat_->onTick(events);
+    smoke_->onTick(events, sim_->player());
+    hitMarker_ = std::max(0.0, hitMarker_ - 1.0 / 15.0);  // fades over a quarter second
+    for (const auto& e : events)
+        if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;
 }
 
 void GameApp::handleTriggeredActions() {
     for (Action a : input_.takeTriggered()) {
         switch (a) {
             case Action::ToggleDebug: hud_->setPanelVisible(!hud_->panelVisible()); break;
-            case Action::Menu:
-                if (settings_.headless) break;
-                mouseGrabbed_ = !mouseGrabbed_;
-                setWindowGrab(mouseGrabbed_);
-                break;
+            case Action::Menu: setMenuOpen(!menu_->isOpen()); break;
             case Action::Screenshot: writeScreenshot("obscura-" + std::to_string(sim_->tick()) + ".png"); break;
             case Action::CycleAo:
                 // Shift+O steps backwards.
@@ -352,10 +377,39 @@ void GameApp::updateView(double alpha) {
     cameraNode_->setPosition(static_cast<float>(eye.x), static_cast<float>(eye.y), static_cast<float>(eye.z));
     cameraNode_->setOrientation(Ogre::Quaternion(Ogre::Radian(static_cast<float>(yaw)), Ogre::Vector3::UNIT_Y) *
                                 Ogre::Quaternion(Ogre::Radian(static_cast<float>(pitch)), Ogre::Vector3::UNIT_X));
+    using Shape = render::PropPose::Shape;
     std::vector<render::PropPose> poses;
-    for (const auto& b : sim_->bodyPoses())
-        poses.push_back({b.position, b.qx, b.qy, b.qz, b.qw, b.halfExtents, render::PropPose::Shape::Box, "crate"});
+    for (const auto& b : sim_->bodyPoses()) {
+        const bool barrel = b.shape == sim::Simulation::BodyPose::Shape::Cylinder;
+        poses.push_back({b.position, b.qx, b.qy, b.qz, b.qw, b.halfExtents, barrel ? Shape::Cylinder : Shape::Box,
+                         barrel ? "barrel" : "crate"});
+    }
+    for (const auto& g : sim_->grenades())
+        poses.push_back({g.position, g.qx, g.qy, g.qz, g.qw, Vec3{g.radius, g.radius, g.radius}, Shape::Sphere, "metal"});
     props_->update(poses);
+    combat_->update(sim_->targets());
+
+    const Ogre::Quaternion q = cameraNode_->getOrientation();
+    const Ogre::Vector3 forward = q * Ogre::Vector3::NEGATIVE_UNIT_Z, up = q * Ogre::Vector3::UNIT_Y;
+    audio_->update(eye, render::fromOgre(forward), render::fromOgre(up), b.velocity);
+}
+
+void GameApp::setMenuOpen(bool open) {
+    menu_->setOpen(open);
+    input_.releaseAll();  // keys held when the menu opened must not stay held behind it
+    if (settings_.headless) return;  // nothing to grab; replays never pause
+    mouseGrabbed_ = !open;
+    setWindowGrab(mouseGrabbed_);
+}
+
+void GameApp::resizeWindow(int width, int height) {
+    if (settings_.headless) return;  // the offscreen target keeps the size the run was started with
+    settings_.width = width;
+    settings_.height = height;
+    SDL_SetWindowSize(mWindows.front().native, width, height);
+    getRenderWindow()->resize(static_cast<unsigned>(width), static_cast<unsigned>(height));
+    camera_->setAspectRatio(static_cast<Ogre::Real>(width) / static_cast<Ogre::Real>(height));
+    applySetting("fov", std::to_string(settings_.fov), "menu");  // the vertical FOV follows the aspect
 }
 
 void GameApp::renderFrame(double frameMs) {
@@ -364,6 +418,14 @@ void GameApp::renderFrame(double frameMs) {
     hs.frameMs = frameMs;
     hs.frameMsIsFixed = settings_.headless;
     hs.status.push_back("AO: " + ao_->mode() + (ao_->aoOnly() ? " (AO only)" : ""));
+    const auto& w = sim_->weapon();
+    hs.magazine = w.magazine;
+    hs.magazineSize = w.magazineSize;
+    hs.reserve = w.reserve;
+    hs.reloadProgress = w.reloading ? w.reloadProgress : -1.0;
+    hs.score = sim_->score();
+    hs.hitMarker = hitMarker_;
+    hs.throwCharge = sim_->throwCharge() > 0 ? sim_->throwCharge() : -1.0;
     hud_->update(hs);
     smoke_->render(*ao_);
     mRoot->renderOneFrame();
@@ -413,6 +475,7 @@ void GameApp::prepareReplay() {
     settings_.width = script_->width;
     settings_.height = script_->height;
     settings_.tickRate = script_->tickRate;
+    if (!script_->start.empty()) settings_.startPose = script_->start;
     settings_.vsync = false;
     if (settings_.replay.size()) settings_.headless = true;
 
@@ -494,8 +557,13 @@ int GameApp::runLive() {
             const double frameSeconds = std::chrono::duration<double>(now - last).count();
             last = now;
             frameMs = frameSeconds * 1000.0;
-            for (int n = clock.advance(frameSeconds); n > 0; --n) stepSimulation();
-            updateView(clock.alpha());
+            // The pause menu pauses the game (the clock does not bank the time either).
+            const int ticks = clock.advance(frameSeconds);
+            if (!menu_->isOpen())
+                for (int n = ticks; n > 0; --n) stepSimulation();
+            else
+                handleTriggeredActions();  // Esc still closes the menu
+            updateView(menu_->isOpen() ? 1.0 : clock.alpha());
         }
         renderFrame(frameMs);
         if (mRoot->endRenderingQueued()) quit_ = true;
@@ -568,6 +636,8 @@ void GameApp::applySetting(const std::string& key, const std::string& value, con
         applyAoSettings();
     } else if (key == "smoke-at") {
         smoke_->spawn(parseVec3(settings_.smokeAt));
+    } else if (key == "master-volume" || key == "effects-volume") {
+        audio_->setVolumes(settings_.masterVolume, settings_.effectsVolume);
     } else if (key == "debug-panel") {
         hud_->setPanelVisible(settings_.showDebugPanel);
     }
@@ -624,8 +694,16 @@ void GameApp::writeRecording() {
 }
 
 // One path for every key and mouse button: the input state, and the recording when there is one.
+bool GameApp::menuTakesInput() const { return menu_ && menu_->isOpen() && !settings_.headless; }
+
 void GameApp::onButton(const std::string& name, bool down) {
     if (name.empty()) return;
+    if (menuTakesInput()) {
+        // A binding waiting for its key takes it; otherwise only the menu key (to close) gets through.
+        if (down && menu_->offerKey(name)) return;
+        const auto menuKey = settings_.bindings.find(Action::Menu);
+        if (menuKey == settings_.bindings.end() || menuKey->second != name) return;
+    }
     if (down) input_.press(name);
     else input_.release(name);
     if (!recorder_) return;
@@ -635,16 +713,19 @@ void GameApp::onButton(const std::string& name, bool down) {
 }
 
 bool GameApp::keyPressed(const OgreBites::KeyboardEvent& evt) {
+    if (menuTakesInput()) imguiInput_->keyPressed(evt);
     if (!evt.repeat) onButton(keyNameFromKeycode(evt.keysym.sym), true);
     return true;
 }
 
 bool GameApp::keyReleased(const OgreBites::KeyboardEvent& evt) {
+    if (menuTakesInput()) imguiInput_->keyReleased(evt);
     onButton(keyNameFromKeycode(evt.keysym.sym), false);
     return true;
 }
 
 bool GameApp::mouseMoved(const OgreBites::MouseMotionEvent& evt) {
+    if (menuTakesInput()) return imguiInput_->mouseMoved(evt);
     if (mouseGrabbed_ || settings_.headless) {
         input_.mouseMotion(evt.xrel, evt.yrel);
         if (recorder_) recorder_->mouse(static_cast<std::int64_t>(sim_->tick()), evt.xrel, evt.yrel);
@@ -653,12 +734,19 @@ bool GameApp::mouseMoved(const OgreBites::MouseMotionEvent& evt) {
 }
 
 bool GameApp::mousePressed(const OgreBites::MouseButtonEvent& evt) {
-    onButton(keyNameFromMouseButton(evt.button), true);
+    if (menuTakesInput() && !menu_->offerKey(keyNameFromMouseButton(evt.button))) imguiInput_->mousePressed(evt);
+    else onButton(keyNameFromMouseButton(evt.button), true);
     return true;
 }
 
 bool GameApp::mouseReleased(const OgreBites::MouseButtonEvent& evt) {
+    if (menuTakesInput()) imguiInput_->mouseReleased(evt);
     onButton(keyNameFromMouseButton(evt.button), false);
+    return true;
+}
+
+bool GameApp::mouseWheelRolled(const OgreBites::MouseWheelEvent& evt) {
+    if (menuTakesInput()) imguiInput_->mouseWheelRolled(evt);
     return true;
 }
 

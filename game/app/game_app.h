@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+namespace OgreBites { struct ImGuiInputListener; }
 namespace Ogre {
 class Camera;
 class RenderTexture;
@@ -27,7 +28,10 @@ namespace sim { class Simulation; struct PlayerState; }
 namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; }
 namespace replay { struct Script; class Recorder; }
 namespace ssao { class AmbientOcclusion; }
+class CombatView;
+class GameAudio;
 class GameSmoke;
+class PauseMenu;
 
 class GameApp : public OgreBites::ApplicationContext, public OgreBites::InputListener {
 public:
@@ -51,6 +55,7 @@ protected:
     bool mouseMoved(const OgreBites::MouseMotionEvent& evt) override;
     bool mousePressed(const OgreBites::MouseButtonEvent& evt) override;
     bool mouseReleased(const OgreBites::MouseButtonEvent& evt) override;
+    bool mouseWheelRolled(const OgreBites::MouseWheelEvent& evt) override;
 
 private:
     void prepareReplay();
@@ -91,7 +96,15 @@ private:
     std::unique_ptr<render::Hud> hud_;
     std::unique_ptr<ssao::AmbientOcclusion> ao_;
     void applyAoSettings();
+    std::unique_ptr<GameAudio> audio_;
+    std::unique_ptr<CombatView> combat_;
     std::unique_ptr<GameSmoke> smoke_;
+    std::unique_ptr<PauseMenu> menu_;
+    std::unique_ptr<OgreBites::ImGuiInputListener> imguiInput_;  // the menu's mouse and keys
+    bool menuTakesInput() const;
+    void setMenuOpen(bool open);
+    void resizeWindow(int width, int height);
+    double hitMarker_ = 0;  // HUD hit marker, 1 at a hit, fading per tick
 
     std::unique_ptr<replay::Script> script_;      // --replay / --timedemo
     std::unique_ptr<replay::Recorder> recorder_;  // --record

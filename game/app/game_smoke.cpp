@@ -12,6 +12,8 @@ namespace {
 // cloud moves well under a cell per 50 ms, so the ray-march shows no stepping.
 constexpr long kTicksPerStep = 3;
 constexpr std::size_t kMaxVolumes = 4;   // the composite's samplers; the oldest is recycled
+constexpr double kCarveRadius = 0.35;    // m: a bullet's wake clears a hand-wide tunnel
+constexpr double kMaxShotRange = 200.0;  // m: the rifle's
 }  // namespace
 
 GameSmoke::GameSmoke(const map::Level& level, std::vector<TriangleMesh> meshes, const Vec3& towardSun, double tickSeconds)
@@ -27,7 +29,24 @@ bool GameSmoke::spawn(const Vec3& where) {
     }
 }
 
-void GameSmoke::onTick(const sim::PlayerState& player) {
+void GameSmoke::onTick(const std::vector<sim::SimEvent>& events, const sim::PlayerState& player) {
+    // A shot carves up to what it hit (its Impact follows it in the same tick), else its range.
+    const sim::SimEvent* shot = nullptr;
+    auto carve = [this](const sim::SimEvent& s, double length) {
+        manager_.carve(s.position, s.direction, length, kCarveRadius);
+    };
+    for (const auto& e : events) {
+        if (e.type == sim::SimEventType::GrenadeDetonate) spawn(e.position);
+        if (e.type == sim::SimEventType::Shot) {
+            if (shot) carve(*shot, kMaxShotRange);
+            shot = &e;
+        } else if (e.type == sim::SimEventType::Impact && shot) {
+            carve(*shot, length(e.position - shot->position));
+            shot = nullptr;
+        }
+    }
+    if (shot) carve(*shot, kMaxShotRange);
+
     if (manager_.volumes().empty() || ++ticks_ % kTicksPerStep != 0) return;
     // The player pushes the smoke: an axis-aligned box the size of the capsule.
     smoke::MovingObstacle body;

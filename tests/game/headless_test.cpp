@@ -119,3 +119,14 @@ TEST(Headless, MiscModelLoadsAMeshWithFallbackMaterials) {
     ASSERT_EQ(r.code, 0) << r.out;
     EXPECT_NE(r.out.find("1 models, 18 generated materials"), std::string::npos) << r.out;  // sibenik/* are not shipped
 }
+
+TEST(Headless, NoAudioDeviceRunsSilentWithOneWarning) {
+    // OpenAL Soft with no backend at all (CI has no sound card either): the game runs, silent,
+    // after one line saying so.
+    const GameRun r = game("--headless --ticks 30 --width 64 --height 64 2>&1", "ALSOFT_DRIVERS=no_such_backend");
+    ASSERT_EQ(r.code, 0) << r.out;
+    std::size_t lines = 0;
+    for (std::size_t at = r.out.find("audio:"); at != std::string::npos; at = r.out.find("audio:", at + 1)) ++lines;
+    EXPECT_EQ(lines, 1u) << r.out;
+    EXPECT_NE(r.out.find("running silent"), std::string::npos) << r.out;
+}
