@@ -3,9 +3,13 @@
 
 #include "settings.h"
 
+#include <algorithm>
+
 namespace obscura {
 
 namespace {
+constexpr int kHissTicks = 180;      // the smoke grenade emits for 3 s (SmokeSettings::emitTime) at 60 Hz
+constexpr int kHissFadeTicks = 30;   // and its hiss fades over the last half second
 audio::AudioSettings audioSettings(const Settings& s) {
     audio::AudioSettings a;
     a.masterVolume = static_cast<float>(s.masterVolume);
@@ -32,6 +36,11 @@ void GameAudio::setVolumes(double master, double effects) {
 
 void GameAudio::onEvents(const std::vector<sim::SimEvent>& events) {
     if (!audio_.available()) return;
+    for (auto& h : hisses_) {
+        if (--h.ticksLeft <= 0) audio_.stop(h.handle);
+        else if (h.ticksLeft < kHissFadeTicks) audio_.setSourceGain(h.handle, static_cast<float>(h.ticksLeft) / kHissFadeTicks);
+    }
+    hisses_.erase(std::remove_if(hisses_.begin(), hisses_.end(), [](const Hiss& h) { return h.ticksLeft <= 0; }), hisses_.end());
     using T = sim::SimEventType;
     for (const auto& e : events) {
         switch (e.type) {
@@ -57,7 +66,10 @@ void GameAudio::onEvents(const std::vector<sim::SimEvent>& events) {
             case T::Land: audio_.play("footstep_1", e.position, static_cast<float>(std::min(1.0, e.strength / 10.0)), 0.8f); break;
             case T::ReloadStart: audio_.play("reload", e.position, 0.8f); break;
             case T::DryFire: audio_.play("dry_fire", e.position); break;
-            default: break;  // PropHit, GrenadeDetonate (the smoke hisses on its own), Jump, ReloadEnd
+            case T::GrenadeDetonate:
+                if (auto h = audio_.play("smoke_hiss", e.position, 1.0f, 1.0f, true)) hisses_.push_back({h, kHissTicks});
+                break;
+            default: break;  // PropHit, Jump, ReloadEnd
         }
     }
 }

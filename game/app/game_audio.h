@@ -31,6 +31,12 @@ public:
 
 private:
     audio::AudioSystem audio_;
+    // A detonated grenade hisses (a loop) while it emits, then fades: handle and ticks left.
+    struct Hiss {
+        audio::SoundHandle handle;
+        int ticksLeft;
+    };
+    std::vector<Hiss> hisses_;
 };
 
 }  // namespace obscura
