@@ -173,7 +173,7 @@ TEST(ReplayScript, HeaderValueErrorsNameTheirLine) {
     EXPECT_EQ(err("resolution 640"), "h.replay:4: missing arguments, expected 'resolution <width> <height>'");
     EXPECT_EQ(err("resolution 640 x"), "h.replay:4: 'x' is not an integer, expected a height");
     EXPECT_EQ(err("level"), "h.replay:4: missing path, expected 'level <path>'");
-    EXPECT_EQ(err("obscura-replay 1"), "h.replay:4: unknown header 'obscura-replay', expected level, seed, resolution, tickrate or '<tick> <command>'");
+    EXPECT_EQ(err("obscura-replay 1"), "h.replay:4: unknown header 'obscura-replay', expected level, seed, resolution, tickrate, start or '<tick> <command>'");
     EXPECT_EQ(err("0"), "h.replay:4: missing command after tick, expected '<tick> <command>'");
     EXPECT_EQ(err("0 capture a\n9 capture a"), "h.replay:5: duplicate capture name 'a' (first on line 4), expected a unique name");
     EXPECT_EQ(err("0 end\n\n# trailing comments are fine\n"), "");
