@@ -221,22 +221,20 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"data-dir", "folder holding media/ and shaders/", str(&S::dataDir)});
     I.add({"log", "OGRE log file (default: obscura.log in the cache folder)", str(&S::logFile)});
     I.add({"hud", "draw the crosshair and status text", flag(&S::hud, "hud"), true});
+    // A text of `count` numbers, kept as written ("x y z yaw pitch").
+    auto numbers = [](std::string S::*m, const std::string& name, int count, const std::string& expected) {
+        return [m, name, count, expected](S& s, W v, W where) {
+            std::istringstream is(v);
+            double x;
+            for (int i = 0; i < count; ++i)
+                if (!(is >> x)) fail(where, name, "'" + v + "', expected '" + expected + "'");
+            s.*m = v;
+        };
+    };
     I.add({"start-pose", "start with the eye at 'x y z yaw pitch' (metres, degrees) instead of the player start",
-           [](S& s, W v, W where) {
-               std::istringstream is(v);
-               double d[5];
-               for (double& x : d)
-                   if (!(is >> x)) fail(where, "start-pose", "'" + v + "', expected 'x y z yaw pitch'");
-               s.startPose = v;
-           }});
+           numbers(&S::startPose, "start-pose", 5, "x y z yaw pitch")});
     I.add({"smoke-at", "release a smoke grenade's cloud at 'x y z' (metres): at the start, or when a replay sets it",
-           [](S& s, W v, W where) {
-               std::istringstream is(v);
-               double d[3];
-               for (double& x : d)
-                   if (!(is >> x)) fail(where, "smoke-at", "'" + v + "', expected 'x y z'");
-               s.smokeAt = v;
-           }});
+           numbers(&S::smokeAt, "smoke-at", 3, "x y z")});
     I.add({"debug-panel", "show the ImGui debug panel at start", flag(&S::showDebugPanel, "debug-panel"), true});
     for (int a = 0; a < static_cast<int>(Action::Count); ++a) {
         const auto action = static_cast<Action>(a);

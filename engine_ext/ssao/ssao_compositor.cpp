@@ -164,8 +164,9 @@ void AmbientOcclusion::setVolumes(std::vector<VolumeBinding> volumes, float dens
     volumes_ = std::move(volumes);
     volumeDensityScale_ = densityScale;
     volumeTime_ = time;
-    // AO off: the plain chain only while there is smoke to march.
-    if (mode_ == "off" && plainChain_ != !volumes_.empty()) {
+    // The smoke pass runs at half resolution only while there is smoke (1x1 otherwise), and with AO
+    // off the plain chain exists only then: rebuild the chain when smoke comes or goes.
+    if (smokeBuffer_ != !volumes_.empty()) {
         const std::string m = mode_;
         mode_.clear();
         setMode(m);
@@ -182,12 +183,13 @@ void AmbientOcclusion::removeCompositors() {
 }
 
 bool AmbientOcclusion::setMode(const std::string& mode) {
-    const bool plain = mode == "off" && !volumes_.empty();
-    if (mode == mode_ && resolution_ == knobs_.resolution && plain == plainChain_) return true;
+    const bool smoke = !volumes_.empty(), plain = mode == "off" && smoke;
+    if (mode == mode_ && resolution_ == knobs_.resolution && plain == plainChain_ && smoke == smokeBuffer_) return true;
     removeCompositors();
     resolution_ = knobs_.resolution;
     mode_ = "off";
     plainChain_ = false;
+    smokeBuffer_ = smoke;
     failure_.clear();
     if (mode == "off" && !plain) return true;
     failure_ = missingFeatures();
@@ -198,12 +200,19 @@ bool AmbientOcclusion::setMode(const std::string& mode) {
     }
     auto& cm = Ogre::CompositorManager::getSingleton();
     for (const std::string& name : {std::string("Obscura/SSAO/GBuffer"), plain ? std::string("Obscura/SSAO/Plain") : compositorFor(mode)}) {
-        // The AO buffers' size is the one knob the script leaves to code.
+        // The buffers' sizes are the knobs the script leaves to code: the AO's resolution setting,
+        // and the smoke's half resolution only while there is smoke (an idle half-resolution pass
+        // cost 2-4 ms a frame on llvmpipe).
         if (auto comp = cm.getByName(name, Ogre::RGN_DEFAULT))
-            for (size_t t = 0; t < comp->getNumTechniques(); ++t)
+            for (size_t t = 0; t < comp->getNumTechniques(); ++t) {
                 for (const char* buffer : {"ao", "blurX", "blurY"})
                     if (auto* def = comp->getTechnique(t)->getTextureDefinition(buffer))
                         def->widthFactor = def->heightFactor = static_cast<float>(resolution_);
+                if (auto* def = comp->getTechnique(t)->getTextureDefinition("smoke")) {
+                    def->width = def->height = smoke ? 0 : 1;
+                    def->widthFactor = def->heightFactor = smoke ? 0.5f : 1.0f;
+                }
+            }
         Ogre::CompositorInstance* inst = cm.addCompositor(&viewport_, name);
         if (!inst || !inst->getTechnique()) {
             failure_ = "AO mode '" + mode + "': compositor " + name + " cannot run here (see the OGRE log); AO off";
@@ -295,6 +304,7 @@ void AmbientOcclusion::notifyMaterialRender(Ogre::uint32 passId, Ogre::MaterialP
     } else if (passId == kComposite || passId == kPlainComposite) {
         fp->setNamedConstant("aoOnly", aoOnly_ && passId == kComposite ? 1.0f : 0.0f);
         fp->setNamedConstant("aoPresent", passId == kComposite ? 1.0f : 0.0f);
+        fp->setNamedConstant("smokePresent", volumes_.empty() ? 0.0f : 1.0f);
     } else if (passId == kSmokeMarch) {
         bindVolumes(*pass, *fp);
     }

@@ -95,6 +95,7 @@ private:
     float volumeDensityScale_ = 1, volumeTime_ = 0;
     Ogre::TexturePtr noVolume_;  // 1x1x1, bound to unused smoke units
     bool plainChain_ = false;    // GBuffer + Plain: AO off, smoke on
+    bool smokeBuffer_ = false;   // the smoke pass at half resolution (else 1x1)
 };
 
 }  // namespace obscura::ssao

@@ -12,6 +12,7 @@ uniform float aoOnly;
 uniform float aoPresent;       // 0 in the plain chain (AO off, smoke on): AO is 1 everywhere
 uniform float depthSharpness;  // as the blur's
 uniform sampler2D smokeMap;     // rgb = smoke light (HDR), a = transmittance, at half resolution
+uniform float smokePresent;    // 0: no smoke volumes this frame, smokeMap is not read
 in vec2 vUv;
 out vec4 fragColour;
 const float kSameSurface = 0.02;  // relative depth: 2 cm at 1 m, 20 cm at 10 m
@@ -68,7 +69,7 @@ void main()
     ivec2 size = textureSize(depthMap, 0);
     ivec2 pixel = clamp(ivec2(vUv * vec2(size)), ivec2(0), size - 1);
     float depth = texelFetch(depthMap, pixel, 0).r;
-    float ao = 1.0;
+    float ao = 1.0;  // (also the AO-only view's value where nothing is drawn)
     if (depth > 0.0 && aoPresent > 0.5) {
         // One bilinear tap gives the AO and the depth of the four texels averaged: where that depth
         // matches this pixel's (no silhouette among them, most of the frame) it is the answer.
@@ -78,13 +79,18 @@ void main()
     if (aoOnly > 0.5) { fragColour = vec4(vec3(ao), 1.0); return; }
 
     // Smoke in front of the surface (or the sky) seen here, from the half-resolution march.
-    vec4 smoke = texture(smokeMap, vUv);
-    if (smoke.a < 0.999) smoke = upsampledSmoke(depth, smoke);
+    vec4 smoke = vec4(0.0, 0.0, 0.0, 1.0);
+    if (smokePresent > 0.5) {
+        smoke = texture(smokeMap, vUv);
+        if (smoke.a < 0.999) smoke = upsampledSmoke(depth, smoke);
+    }
     vec3 smokeLight = smoke.rgb;
     float smokeT = smoke.a;
 
     vec3 shown = texelFetch(colourMap, pixel, 0).rgb;
-    if (ao > 0.998 && smokeT > 0.999) { fragColour = vec4(shown, 1.0); return; }  // nothing to change
+    // Nothing to change: AO within 1.5 % of open takes less than one 8-bit level off the ambient
+    // light, so most of an open floor skips the tone-mapping round trip below.
+    if (ao > 0.985 && smokeT > 0.999) { fragColour = vec4(shown, 1.0); return; }
     // 1/1024: white stays finite when undone (1 - exp(-x) reaches 1 - 1/1024 at x = 6.9)
     vec3 light = -log(max(vec3(1.0) - pow(shown, vec3(2.2)), vec3(1.0 / 1024.0)));
     light *= vec3(1.0) - texelFetch(ambientMap, pixel, 0).rgb * (1.0 - ao);
