@@ -49,6 +49,7 @@ void Hud::update(const HudState& state) {
     const float gap = 4.0f, len = 8.0f;
     const ImVec2 dirs[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     for (const auto& d : dirs) {
+        if (!state.crosshair) break;
         const ImVec2 a(centre.x + d.x * gap, centre.y + d.y * gap);
         const ImVec2 b(centre.x + d.x * (gap + len), centre.y + d.y * (gap + len));
         dl->AddLine(a, b, IM_COL32(0, 0, 0, 160), 4.0f);

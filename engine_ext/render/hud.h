@@ -18,6 +18,7 @@ namespace obscura::render {
 
 struct HudState {
     bool visible = true;     // crosshair and text (the debug panel follows its own toggle)
+    bool crosshair = true;   // off while a menu is open
     double frameMs = 0;      // shown as the frame time
     bool frameMsIsFixed = false;  // headless runs show the fixed tick time so captures are repeatable
     std::vector<std::string> status;  // extra lines under the frame time (AO mode, ...)

@@ -415,6 +415,7 @@ void GameApp::resizeWindow(int width, int height) {
 void GameApp::renderFrame(double frameMs) {
     render::HudState hs;
     hs.visible = settings_.hud;
+    hs.crosshair = !menu_->isOpen();
     hs.frameMs = frameMs;
     hs.frameMsIsFixed = settings_.headless;
     hs.status.push_back("AO: " + ao_->mode() + (ao_->aoOnly() ? " (AO only)" : ""));
