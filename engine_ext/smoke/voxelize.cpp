@@ -152,11 +152,8 @@ void voxelizeLevel(const map::Level& level, const std::vector<TriangleMesh>& mes
                     solid[grid.index(i, j, k)] = 1;
             }
 
-    for (const auto& brush : level.brushes) {
-        if (!brush.solid) continue;
-        const ConvexHull hull = makeHull(brush);
-        int lo[3], hi[3];
-        if (hull.points.empty() || !cellRange(hull.bounds, lo, hi)) continue;
+    // Marks every not-yet-solid cell of the range [lo, hi] whose box `overlaps`.
+    auto mark = [&](const int lo[3], const int hi[3], const auto& overlaps) {
         for (int k = lo[2]; k <= hi[2]; ++k)
             for (int j = lo[1]; j <= hi[1]; ++j)
                 for (int i = lo[0]; i <= hi[0]; ++i) {
@@ -164,8 +161,15 @@ void voxelizeLevel(const map::Level& level, const std::vector<TriangleMesh>& mes
                     if (s) continue;
                     Vec3 mn, mx;
                     cellBox(i, j, k, mn, mx);
-                    if (boxOverlapsHull(mn, mx, hull, eps)) s = 1;
+                    if (overlaps(mn, mx)) s = 1;
                 }
+    };
+    for (const auto& brush : level.brushes) {
+        if (!brush.solid) continue;
+        const ConvexHull hull = makeHull(brush);
+        int lo[3], hi[3];
+        if (hull.points.empty() || !cellRange(hull.bounds, lo, hi)) continue;
+        mark(lo, hi, [&](const Vec3& mn, const Vec3& mx) { return boxOverlapsHull(mn, mx, hull, eps); });
     }
 
     for (const auto& mesh : meshes) {
@@ -179,15 +183,7 @@ void voxelizeLevel(const map::Level& level, const std::vector<TriangleMesh>& mes
             tb.extend(c);
             int lo[3], hi[3];
             if (!cellRange(tb, lo, hi)) continue;
-            for (int k = lo[2]; k <= hi[2]; ++k)
-                for (int j = lo[1]; j <= hi[1]; ++j)
-                    for (int i = lo[0]; i <= hi[0]; ++i) {
-                        std::uint8_t& s = solid[grid.index(i, j, k)];
-                        if (s) continue;
-                        Vec3 mn, mx;
-                        cellBox(i, j, k, mn, mx);
-                        if (boxOverlapsTriangle(mn, mx, a, b, c, eps)) s = 1;
-                    }
+            mark(lo, hi, [&](const Vec3& mn, const Vec3& mx) { return boxOverlapsTriangle(mn, mx, a, b, c, eps); });
         }
     }
 }

@@ -14,10 +14,7 @@ using namespace obscura::smoke;
 
 namespace {
 
-const map::Level& room() {
-    static const map::Level l = testlevels::closedRoom({-2.5, 0, -2.5}, {2.5, 2.75, 2.5});
-    return l;
-}
+const map::Level& room() { return testlevels::standardRoom(); }
 
 std::string createError(const map::Level& level, const Vec3& centre, const SmokeSettings& st) {
     try {

@@ -13,10 +13,7 @@ using namespace obscura::smoke;
 
 namespace {
 
-const map::Level& room() {
-    static const map::Level l = testlevels::closedRoom({-2.5, 0, -2.5}, {2.5, 2.75, 2.5});
-    return l;
-}
+const map::Level& room() { return testlevels::standardRoom(); }
 
 // A scripted run touching every code path: emitter, obstacles moving through, a bullet.
 void script(SmokeVolume& vol, int steps, bool reference) {

@@ -87,4 +87,10 @@ inline SmokeSettings small(int resolution = 24, int threads = 2) {
     return s;
 }
 
+// The 5 x 2.75 x 5 m closed room most solver tests release smoke in (built once).
+inline const map::Level& standardRoom() {
+    static const map::Level l = closedRoom({-2.5, 0, -2.5}, {2.5, 2.75, 2.5});
+    return l;
+}
+
 }  // namespace obscura::smoke::testlevels
