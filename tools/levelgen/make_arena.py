@@ -257,9 +257,11 @@ def write(out):
 def plan(out, step_x=1, step_y=1, z=1):
     """Top view in a band at height z..z+0.5 m, one character per step_x by step_y metres:
     '#' walls (taller than the band), '-' low things (counter, cover, stair steps), 'c' clip, and
-    the point entities on top: P player start, D deathmatch start, S sign, x crates, * lights."""
+    the point entities on top: P player start, D deathmatch start, S sign, x crates, o barrels,
+    T pop-up targets, M moving targets (the middle of their track), * lights."""
     solids = [Brush(b, "") for b in brushes if b[0][1] != "sky"]
-    marks = {"info_player_start": "P", "info_player_deathmatch": "D", "info_sign": "S", "prop_crate": "x", "light": "*"}
+    marks = {"info_player_start": "P", "info_player_deathmatch": "D", "info_sign": "S", "prop_crate": "x",
+             "prop_barrel": "o", "target_popup": "T", "target_moving": "M", "light": "*"}
     cols, rows = 55, 55
     grid = [[" "] * cols for _ in range(rows)]
     for r in range(rows):
