@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 // Forced inlining: GCC's -O2 heuristics otherwise leave the sampling helpers as calls, which
 // keeps the x loops of the optimised path from vectorising.
@@ -106,70 +107,96 @@ OBSCURA_SMOKE_INLINE float wFaceV(const float* v, std::ptrdiff_t c, const Dims& 
 }
 
 // Samples within one cell of a grid point. Every advection trace moves at most one cell per axis
-// (cells()), so its sample is a trilinear blend of the point's own value and, per axis, ONE
-// neighbour: the one toward the displacement, weighted |p|. Written with value selects instead
-// of computed indices, so the loops over x vectorise (no gathers) and no index can go astray.
+// (cells()), so its sample is a trilinear blend of a 2x2x2 block: per axis the point's own value
+// and ONE neighbour, the one toward the displacement, weighted |p|. The block is picked out of the
+// 27 values around the point with value selects instead of computed indices: no gathers, and no
+// index can go astray. Templated on the value type: F = float for the reference path, a vector of
+// floats (GCC vector extension) for the optimised one, which runs the same expressions lane by
+// lane and so gives the same bits. (Where a whole vector traces the same way it loads the block
+// directly and does the same arithmetic: smoke_solver_fast_impl.h.)
 OBSCURA_SMOKE_INLINE float absf(float x) { return sel(x < 0.f, -x, x); }
+template <class F>
+OBSCURA_SMOKE_INLINE F loadT(const float* p) {
+    if constexpr (std::is_same_v<F, float>) {
+        return *p;
+    } else {
+        F v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    }
+}
+template <class F>
+OBSCURA_SMOKE_INLINE F absT(F x) { return x < F{} ? -x : x; }  // as absf
 // The neighbour toward p along one axis (the value itself when p == 0).
-OBSCURA_SMOKE_INLINE float toward(float p, float minus, float self, float plus) {
-    return sel(p < 0.f, minus, sel(p > 0.f, plus, self));
+template <class F>
+OBSCURA_SMOKE_INLINE F towardT(F p, F minus, F self, F plus) { return p < F{} ? minus : (p > F{} ? plus : self); }
+// o[k] or its z-neighbour toward pz.
+template <class F>
+OBSCURA_SMOKE_INLINE F towardZ(const float* o, std::ptrdiff_t k, std::ptrdiff_t sz, F pz) {
+    return towardT(pz, loadT<F>(o + k - sz), loadT<F>(o + k), loadT<F>(o + k + sz));
 }
 
-// Per-axis weights of the three samples -1, 0, +1 for a displacement p (|p| <= 1): the sample
-// toward p gets |p|, the point itself 1 - |p|, the other 0. Three products per row instead of
-// a select-and-lerp keeps the vector code short.
-OBSCURA_SMOKE_INLINE float weightMinus(float p) { return sel(p < 0.f, -p, 0.f); }
-OBSCURA_SMOKE_INLINE float weightPlus(float p) { return sel(p > 0.f, p, 0.f); }
-OBSCURA_SMOKE_INLINE float blend3(float m, float c, float p, float wm, float wc, float wp) { return (wm * m + wc * c) + wp * p; }
-OBSCURA_SMOKE_INLINE float row3(const float* f, std::ptrdiff_t r, float wm, float wc, float wp) {
-    return blend3(f[r - 1], f[r], f[r + 1], wm, wc, wp);
-}
-// f at (i, j, k) + (px, py, pz) for the cell/face c = (i, j, k), |p| <= 1 per axis (trilinear).
-OBSCURA_SMOKE_INLINE float sampleNear(const float* f, std::ptrdiff_t c, const Dims& d, float px, float py, float pz) {
-    const float xm = weightMinus(px), xp = weightPlus(px), xc = 1.f - absf(px);
-    const float ym = weightMinus(py), yp = weightPlus(py), yc = 1.f - absf(py);
-    const float zm = weightMinus(pz), zp = weightPlus(pz), zc = 1.f - absf(pz);
-    const std::ptrdiff_t a = c - d.sz, b = c + d.sz;
-    const float below = blend3(row3(f, a - d.sy, xm, xc, xp), row3(f, a, xm, xc, xp), row3(f, a + d.sy, xm, xc, xp), ym, yc, yp);
-    const float level = blend3(row3(f, c - d.sy, xm, xc, xp), row3(f, c, xm, xc, xp), row3(f, c + d.sy, xm, xc, xp), ym, yc, yp);
-    const float above = blend3(row3(f, b - d.sy, xm, xc, xp), row3(f, b, xm, xc, xp), row3(f, b + d.sy, xm, xc, xp), ym, yc, yp);
-    return blend3(below, level, above, zm, zc, zp);
-}
-
-// Range (min, max) of the (up to) 2x2x2 values sampleNear blends: MacCormack's clamp bounds
-// (Selle et al. 2008).
-struct Range {
-    float lo, hi;
-};
-// The block is the rows (j, k), (j', k), (j, k'), (j', k') with j' / k' the neighbours toward
-// py / pz (the row itself when 0): select those rows' three x values first, then each row's x
-// pair. (min and max are exact, so the grouping does not change a bit of the result.)
-OBSCURA_SMOKE_INLINE Range pairRange(float m1, float m0, float p1, float px) {
-    const float n = toward(px, m1, m0, p1);
-    return {minf(m0, n), maxf(m0, n)};
-}
-OBSCURA_SMOKE_INLINE Range rangeNear(const float* f, std::ptrdiff_t c, const Dims& d, float px, float py, float pz) {
+// The block around the sample at o for a displacement (px, py, pz), |p| <= 1 per axis: a* in the
+// sample's own z plane, b* in the plane toward pz; *0 the own column, *1 the x neighbour's, *2
+// the y neighbour's, *3 the diagonal one. The z choice is made on the nine columns first.
+template <class F>
+OBSCURA_SMOKE_INLINE void blockNear(const float* o, const Dims& d, F px, F py, F pz, F& a0, F& a1, F& a2, F& a3, F& b0, F& b1,
+                                    F& b2, F& b3) {
     const std::ptrdiff_t sy = d.sy, sz = d.sz;
-    // Row (j, k).
-    const float a0 = f[c - 1], a1 = f[c], a2 = f[c + 1];
-    // Row (j', k).
-    const float b0 = toward(py, f[c - sy - 1], a0, f[c + sy - 1]);
-    const float b1 = toward(py, f[c - sy], a1, f[c + sy]);
-    const float b2 = toward(py, f[c - sy + 1], a2, f[c + sy + 1]);
-    // Row (j, k').
-    const float c0 = toward(pz, f[c - sz - 1], a0, f[c + sz - 1]);
-    const float c1 = toward(pz, f[c - sz], a1, f[c + sz]);
-    const float c2 = toward(pz, f[c - sz + 1], a2, f[c + sz + 1]);
-    // Row (j', k'): toward pz between the rows (j', k - 1), (j', k), (j', k + 1).
-    const float e0 = toward(pz, toward(py, f[c - sz - sy - 1], f[c - sz - 1], f[c - sz + sy - 1]), b0,
-                            toward(py, f[c + sz - sy - 1], f[c + sz - 1], f[c + sz + sy - 1]));
-    const float e1 = toward(pz, toward(py, f[c - sz - sy], f[c - sz], f[c - sz + sy]), b1,
-                            toward(py, f[c + sz - sy], f[c + sz], f[c + sz + sy]));
-    const float e2 = toward(pz, toward(py, f[c - sz - sy + 1], f[c - sz + 1], f[c - sz + sy + 1]), b2,
-                            toward(py, f[c + sz - sy + 1], f[c + sz + 1], f[c + sz + sy + 1]));
-    const Range ra = pairRange(a0, a1, a2, px), rb = pairRange(b0, b1, b2, px), rc = pairRange(c0, c1, c2, px),
-                re = pairRange(e0, e1, e2, px);
-    return {minf(minf(ra.lo, rb.lo), minf(rc.lo, re.lo)), maxf(maxf(ra.hi, rb.hi), maxf(rc.hi, re.hi))};
+    auto at = [o](std::ptrdiff_t k) { return loadT<F>(o + k); };
+    a0 = at(0);
+    a1 = towardT(px, at(-1), a0, at(1));
+    a2 = towardT(py, at(-sy), a0, at(sy));
+    a3 = towardT(py, towardT(px, at(-sy - 1), at(-sy), at(-sy + 1)), a1, towardT(px, at(sy - 1), at(sy), at(sy + 1)));
+    b0 = towardZ(o, 0, sz, pz);
+    b1 = towardT(px, towardZ(o, -1, sz, pz), b0, towardZ(o, 1, sz, pz));
+    const F bm = towardZ(o, -sy, sz, pz), bp = towardZ(o, sy, sz, pz);
+    b2 = towardT(py, bm, b0, bp);
+    b3 = towardT(py, towardT(px, towardZ(o, -sy - 1, sz, pz), bm, towardZ(o, -sy + 1, sz, pz)), b1,
+                 towardT(px, towardZ(o, sy - 1, sz, pz), bp, towardZ(o, sy + 1, sz, pz)));
+}
+
+// Trilinear blend of a block with the weights |p|: x, then y, then z (with p == 0 on an axis the
+// lerps return the own value); and the block's minimum and maximum, in one fixed grouping (min
+// and max are exact, but the sign of a zero depends on the order).
+template <class F>
+OBSCURA_SMOKE_INLINE F lerpT(F a, F b, F t) { return a + (b - a) * t; }
+template <class F>
+OBSCURA_SMOKE_INLINE F minT(F a, F b) { return b < a ? b : a; }
+template <class F>
+OBSCURA_SMOKE_INLINE F maxT(F a, F b) { return b > a ? b : a; }
+template <class F>
+OBSCURA_SMOKE_INLINE F blendBlock(F a0, F a1, F a2, F a3, F b0, F b1, F b2, F b3, F ax, F ay, F az) {
+    const F a = lerpT(lerpT(a0, a1, ax), lerpT(a2, a3, ax), ay);
+    const F b = lerpT(lerpT(b0, b1, ax), lerpT(b2, b3, ax), ay);
+    return lerpT(a, b, az);
+}
+template <class F>
+OBSCURA_SMOKE_INLINE F blockMin(F a0, F a1, F a2, F a3, F b0, F b1, F b2, F b3) {
+    return minT(minT(minT(a0, a1), minT(a2, a3)), minT(minT(b0, b1), minT(b2, b3)));
+}
+template <class F>
+OBSCURA_SMOKE_INLINE F blockMax(F a0, F a1, F a2, F a3, F b0, F b1, F b2, F b3) {
+    return maxT(maxT(maxT(a0, a1), maxT(a2, a3)), maxT(maxT(b0, b1), maxT(b2, b3)));
+}
+
+// The field at the sample at o displaced by (px, py, pz), |p| <= 1 per axis (trilinear).
+template <class F>
+OBSCURA_SMOKE_INLINE F sampleNearT(const float* o, const Dims& d, F px, F py, F pz) {
+    F a0, a1, a2, a3, b0, b1, b2, b3;
+    blockNear(o, d, px, py, pz, a0, a1, a2, a3, b0, b1, b2, b3);
+    return blendBlock(a0, a1, a2, a3, b0, b1, b2, b3, absT(px), absT(py), absT(pz));
+}
+// Range (lo, hi) of the block sampleNearT blends: MacCormack's clamp bounds (Selle et al. 2008).
+template <class F>
+OBSCURA_SMOKE_INLINE void rangeNearT(const float* o, const Dims& d, F px, F py, F pz, F& lo, F& hi) {
+    F a0, a1, a2, a3, b0, b1, b2, b3;
+    blockNear(o, d, px, py, pz, a0, a1, a2, a3, b0, b1, b2, b3);
+    lo = blockMin(a0, a1, a2, a3, b0, b1, b2, b3);
+    hi = blockMax(a0, a1, a2, a3, b0, b1, b2, b3);
+}
+OBSCURA_SMOKE_INLINE float sampleNear(const float* f, std::ptrdiff_t c, const Dims& d, float px, float py, float pz) {
+    return sampleNearT(f + c, d, px, py, pz);
 }
 
 // Semi-Lagrangian forward step: the field at the backtraced point of sample c.
@@ -180,14 +207,20 @@ OBSCURA_SMOKE_INLINE float advectForward(const float* f, const Dims& d, std::ptr
 // MacCormack correction (Selle et al. 2008), in two halves the optimised path runs as separate
 // loops (fewer live registers): hat + (orig - reverse) / 2, then clamped to the range of the
 // source values the forward trace blended.
+// (Templated halves: the optimised path's vectors run the same expressions.)
+template <class F>
+OBSCURA_SMOKE_INLINE F macCormackValue(F hat, F orig, F reverse) { return hat + 0.5f * (orig - reverse); }
+template <class F>
+OBSCURA_SMOKE_INLINE F clampT(F x, F lo, F hi) { return x > lo ? (x < hi ? x : hi) : lo; }  // as clampf
 OBSCURA_SMOKE_INLINE float macCormack(const float* f, const float* hat, const Dims& d, std::ptrdiff_t c, float qx, float qy,
                                       float qz) {
-    return hat[c] + 0.5f * (f[c] - sampleNear(hat, c, d, qx, qy, qz));
+    return macCormackValue(hat[c], f[c], sampleNear(hat, c, d, qx, qy, qz));
 }
 OBSCURA_SMOKE_INLINE float clampToSources(float value, const float* f, const Dims& d, std::ptrdiff_t c, float qx, float qy,
                                           float qz) {
-    const Range r = rangeNear(f, c, d, -qx, -qy, -qz);
-    return clampf(value, r.lo, r.hi);
+    float lo, hi;
+    rangeNearT(f + c, d, -qx, -qy, -qz, lo, hi);
+    return clampT(value, lo, hi);
 }
 OBSCURA_SMOKE_INLINE float advectCorrect(const float* f, const float* hat, const Dims& d, std::ptrdiff_t c, float qx,
                                          float qy, float qz) {

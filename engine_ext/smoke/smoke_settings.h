@@ -11,6 +11,13 @@ enum class PressureSolver {
                           // iteration at the same memory traffic (measured: see README.md)
 };
 
+// Which build of the optimised solver runs (smoke_solver_fast.cpp). Both give bitwise-equal
+// fields; Baseline exists to test that and to measure the difference.
+enum class VectorIsa {
+    Best,      // AVX2 (8 floats a vector) where the CPU has it, else the baseline
+    Baseline,  // x86-64 baseline: SSE2, 4 floats a vector
+};
+
 struct SmokeSettings {
     // Grid. 64^3 x 0.25 m = a 16 m box centred on the detonation point: room-sized smoke with
     // 25 cm detail (the renderer adds sub-grid noise). Clamped to [16, 128] with a warning.
@@ -24,6 +31,7 @@ struct SmokeSettings {
     PressureSolver pressureSolver = PressureSolver::RedBlackGaussSeidel;
 
     int threads = 0;  // 0: hardware concurrency. Results are bitwise identical for any count.
+    VectorIsa vectorIsa = VectorIsa::Best;  // results are bitwise identical for either
 
     // Lifetime (CS-style smoke grenade): emit for 3 s, hold, fade over the last 4 s, gone at 18 s.
     double lifetime = 18.0;

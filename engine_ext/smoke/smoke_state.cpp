@@ -81,7 +81,7 @@ void initialiseState(SmokeState& s, const SmokeSettings& st) {
     s.planeB.assign(g.nz, 0.f);
     s.planeSum.assign(g.nz, 0.0);
     s.planeSumAfter.assign(g.nz, 0.0);
-    s.rowScratch.assign(static_cast<std::size_t>(g.nx) * g.nz, 0.f);
+    s.rowScratch.assign(SmokeState::kScratchRows * static_cast<std::size_t>(g.nx) * g.nz, 0.f);
     for (int colour = 0; colour < 2; ++colour)
         for (auto* f : {&s.rbPressure[colour], &s.rbRhs[colour], &s.rbDiagInv[colour]})
             f->assign(static_cast<std::size_t>(s.rbWidth()) * g.ny * g.nz, 0.f);

@@ -51,7 +51,8 @@ struct SmokeState {
     std::vector<float> hat[5], next[5], omega[4], rhs, pressureTmp;
     std::vector<float> planeA, planeB;  // per z-plane reduction partials (fixed order)
     std::vector<double> planeSum, planeSumAfter;  // per z-plane density sums (mass renormalisation)
-    std::vector<float> rowScratch;                 // one x row per z-plane (advection), so step() never allocates
+    static constexpr std::size_t kScratchRows = 3;  // advection: a row's trace (x, y, z)
+    std::vector<float> rowScratch;                 // kScratchRows x rows per z-plane, so step() never allocates
     // Red-black Gauss-Seidel works on the two colours stored apart (row r = j + ny k holds its
     // cells of one colour at (i >> 1) in rbWidth() slots), so each sweep is contiguous.
     std::vector<float> rbPressure[2], rbRhs[2], rbDiagInv[2];
@@ -79,6 +80,7 @@ void rebuildDerived(SmokeState& s, int k0, int k1);
 // One solver substep of dt seconds (emitter, advection, forces, projection, dissipation).
 // The fast path uses `pool`; the reference path is single-threaded with plain loops.
 void substepFast(SmokeState& s, const SmokeSettings& settings, ThreadPool& pool, float dt);
+bool avx2PathAvailable();  // the CPU runs the AVX2 build of substepFast (VectorIsa::Best uses it)
 void substepReference(SmokeState& s, const SmokeSettings& settings, float dt);
 
 // Shared small pieces used by both paths.

@@ -1,8 +1,18 @@
 #include "smoke/thread_pool.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace obscura::smoke {
+namespace {
+void cpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();  // eases the spin on the sibling hyper-thread and the memory bus
+#else
+    std::this_thread::yield();
+#endif
+}
+}  // namespace
 
 ThreadPool::ThreadPool(int threads) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -37,12 +47,13 @@ void ThreadPool::parallelFor(int count, const std::function<void(int, int)>& fn)
         job_ = &fn;
         count_ = count;
         pending_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
-        ++generation_;
+        generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     runChunk(0);
     // Short spin first: most chunks finish within microseconds of each other.
-    for (int spin = 0; spin < 4000 && pending_.load(std::memory_order_acquire) != 0; ++spin) std::this_thread::yield();
+    const auto spinUntil = std::chrono::steady_clock::now() + std::chrono::microseconds(200);
+    while (pending_.load(std::memory_order_acquire) != 0 && std::chrono::steady_clock::now() < spinUntil) cpuRelax();
     if (pending_.load(std::memory_order_acquire) != 0) {
         std::unique_lock<std::mutex> lock(mutex_);
         done_.wait(lock, [this] { return pending_.load(std::memory_order_acquire) == 0; });
@@ -53,11 +64,19 @@ void ThreadPool::parallelFor(int count, const std::function<void(int, int)>& fn)
 void ThreadPool::workerLoop(int index) {
     unsigned seen = 0;
     for (;;) {
+        // Spin briefly before sleeping: a step issues ~50 jobs back to back, and waking a thread
+        // parked on the condition variable costs tens of microseconds each time (measured at 64^3:
+        // ~0.6 ms of a 7 ms step). 100 us of polling after a job is nothing next to that.
+        const auto spinUntil = std::chrono::steady_clock::now() + std::chrono::microseconds(100);
+        while (generation_.load(std::memory_order_acquire) == seen && !stop_.load(std::memory_order_relaxed) &&
+               std::chrono::steady_clock::now() < spinUntil) {
+            cpuRelax();
+        }
         {
             std::unique_lock<std::mutex> lock(mutex_);
             wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
             if (stop_) return;
-            seen = generation_;
+            seen = generation_.load(std::memory_order_relaxed);
         }
         runChunk(index);
         if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {

@@ -36,9 +36,9 @@ private:
     std::condition_variable wake_, done_;
     const std::function<void(int, int)>* job_ = nullptr;
     int count_ = 0;
-    unsigned generation_ = 0;
+    std::atomic<unsigned> generation_{0};  // bumped per job; workers poll it before sleeping
     std::atomic<int> pending_{0};
-    bool stop_ = false;
+    std::atomic<bool> stop_{false};
 };
 
 }  // namespace obscura::smoke
