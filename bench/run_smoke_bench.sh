@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds obscura_smokebench in a Release build dir (build-release-smoke/) and runs it; the output
 # is also written to bench/results/smoke_<UTC date-time>.txt (bench/results is git-ignored).
-# Usage: bench/run_smoke_bench.sh [--threads N] [--quick]
+# Usage: bench/run_smoke_bench.sh [--threads N] [--quick] [--baseline]
 # The machine's other load skews the figures: run it on an idle machine and compare ratios.
 set -euo pipefail
 cd "$(dirname "$0")/.."
