@@ -13,7 +13,7 @@ namespace {
 // cloud moves well under a cell per 50 ms, so the ray-march shows no stepping.
 constexpr long kTicksPerStep = 3;
 constexpr std::size_t kMaxVolumes = 4;   // the composite's samplers; the oldest is recycled
-constexpr double kCarveRadius = 0.35;    // m: a bullet's wake clears a hand-wide tunnel
+constexpr double kCarveRadius = 0.8;     // m: clear within 0.4 m, fading to 0.8
 constexpr double kMaxShotRange = 200.0;  // m: the rifle's
 }  // namespace
 
