@@ -36,7 +36,7 @@ struct DynamicCell {
 struct SmokeState {
     GridInfo grid;
     kernels::Dims dims{};
-    std::vector<std::uint8_t> voxelSolid;   // the voxeliser's verdict (brushes, meshes, out of bounds)
+    std::vector<std::uint8_t> voxelSolid;   // the voxeliser's verdict: 0 free, kVoxelBuilt, kVoxelOutside
     std::vector<std::uint8_t> staticClass;  // CellClass: voxels + sealed-off fluid + the ghost layer
     std::vector<std::uint8_t> cellClass;    // staticClass + moving obstacles: what the solver uses
     std::vector<std::uint8_t> faceMask[3];  // 1: face between c - stride and c is between a fluid cell

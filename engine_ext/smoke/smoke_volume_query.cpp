@@ -7,6 +7,7 @@
 #include "smoke/smoke_volume.h"
 #include "smoke/smoke_volume_impl.h"
 #include "smoke/thread_pool.h"
+#include "smoke/voxelize.h"
 
 namespace obscura::smoke {
 
@@ -111,7 +112,10 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
     // Optical depth swept slice by slice along the dominant axis a, from the light's side: each
     // cell adds half its own density and half the density one slice toward the light (bilinear
     // at the light direction's constant offset) to that point's depth. Cells of one slice are
-    // independent: the slice's rows go to the thread pool.
+    // independent: the slice's rows go to the thread pool. Built cells (walls, roofs, props'
+    // meshes) are opaque: each adds kOpaque to the depth, so the smoke under a roof or behind a
+    // wall is in its shadow (without it the sun lit smoke in a roofed corridor through the roof,
+    // and the slices' bilinear steps showed as bright blocks).
     const double comp[3] = {L.x, L.y, L.z};
     int a = 0;
     for (int x = 1; x < 3; ++x)
@@ -127,6 +131,8 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
     std::vector<float>& tau = impl_->opticalDepth;
     tau.assign(s.grid.cells(), 0.f);
     const float* den = s.density.data();
+    const std::uint8_t* built = s.voxelSolid.data();
+    constexpr float kOpaque = 12.f;  // optical depth of a built cell: e^-12, no light gets through
     auto at = [&](int sa, int xb, int yc) {
         return static_cast<std::size_t>(sa * stride[a] + xb * stride[b] + yc * stride[c]);
     };
@@ -144,7 +150,8 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
                         return kernels::lerp(kernels::lerp(f[p00], f[p10], fb), kernels::lerp(f[p01], f[p11], fb), fc);
                     };
                     const std::size_t cell = at(sa, xb, yc);
-                    tau[cell] = bilinear(tau.data()) + halfStep * (den[cell] + bilinear(den));
+                    tau[cell] = bilinear(tau.data()) + halfStep * (den[cell] + bilinear(den)) +
+                                (built[cell] == kVoxelBuilt ? kOpaque : 0.f);
                 }
             }
         });

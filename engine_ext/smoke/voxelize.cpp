@@ -149,7 +149,7 @@ void voxelizeLevel(const map::Level& level, const std::vector<TriangleMesh>& mes
                 const auto& lb = level.bounds;
                 if (lb.empty() || c.x < lb.min.x || c.y < lb.min.y || c.z < lb.min.z || c.x > lb.max.x ||
                     c.y > lb.max.y || c.z > lb.max.z)
-                    solid[grid.index(i, j, k)] = 1;
+                    solid[grid.index(i, j, k)] = kVoxelOutside;
             }
 
     // Marks every not-yet-solid cell of the range [lo, hi] whose box `overlaps`.
@@ -158,10 +158,10 @@ void voxelizeLevel(const map::Level& level, const std::vector<TriangleMesh>& mes
             for (int j = lo[1]; j <= hi[1]; ++j)
                 for (int i = lo[0]; i <= hi[0]; ++i) {
                     std::uint8_t& s = solid[grid.index(i, j, k)];
-                    if (s) continue;
+                    if (s == kVoxelBuilt) continue;
                     Vec3 mn, mx;
                     cellBox(i, j, k, mn, mx);
-                    if (overlaps(mn, mx)) s = 1;
+                    if (overlaps(mn, mx)) s = kVoxelBuilt;
                 }
     };
     for (const auto& brush : level.brushes) {

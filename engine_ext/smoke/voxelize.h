@@ -42,8 +42,12 @@ bool boxOverlapsHull(const Vec3& boxMin, const Vec3& boxMax, const ConvexHull& h
 bool boxOverlapsTriangle(const Vec3& boxMin, const Vec3& boxMax, const Vec3& a, const Vec3& b, const Vec3& c,
                          double epsilon);
 
-// Marks solid cells (1) in `solid` (grid.cells() bytes, 0 = free): solid brushes, mesh triangles,
-// and cells whose centre lies outside the level's bounds.
+// Marks solid cells in `solid` (grid.cells() bytes, 0 = free): kVoxelBuilt for cells overlapping
+// solid brushes and mesh triangles, kVoxelOutside for cells whose centre lies outside the level's
+// bounds (not built, but no smoke may go there). The flight to the light (self-shadow) is blocked
+// by built cells only: above an open level's bounds is sky.
+constexpr std::uint8_t kVoxelBuilt = 1;
+constexpr std::uint8_t kVoxelOutside = 2;
 void voxelizeLevel(const map::Level& level, const std::vector<TriangleMesh>& meshes, const GridInfo& grid,
                    std::vector<std::uint8_t>& solid);
 

@@ -26,6 +26,11 @@ const float kSmokeSigma = 6.0;     // extinction per metre at density 1: 1 m of 
 const vec3 kSmokeAlbedo = vec3(0.82, 0.82, 0.8);  // light grey, a little warm
 const float kSmokeStep = 0.25;     // metres: the grid's cell size; finer shows no more detail
 const int kSmokeMaxSteps = 64;     // a 16 m crossing
+// A rotation (orthonormal) for the noise lattice: value noise is blocky along its lattice axes;
+// turned off the world axes it cannot line up with the grid's cells or with a view down a
+// corridor. (The blocky look smoke had in roofed corridors was the sun's light, which reached
+// it through the roof: the solver's transmittance now counts walls and roofs.)
+const mat3 kNoiseTurn = mat3(0.00, 0.80, 0.60, -0.80, 0.36, -0.48, -0.60, -0.48, 0.64);
 
 vec2 smokeSample(int i, vec3 uvw)
 {
@@ -74,9 +79,10 @@ void marchSmoke(vec3 origin, vec3 dir, float maxT, float jitter, inout vec3 ligh
             vec3 p = origin + dir * (t0 + (float(s) + jitter) * dt);
             vec2 st = smokeSample(i, (p - smokeMin[i]) / smokeSize[i]);
             if (st.r <= 0.0) continue;
-            // Sub-grid detail: two octaves at 1.3 and 2.9 cycles a metre, drifting upwards.
-            vec3 q = p + vec3(0.0, -0.3 * smokeTime, 0.0);
-            float detail = 0.55 + 0.6 * smokeNoise(q * 1.3) + 0.3 * (smokeNoise(q * 2.9) - 0.5);
+            // Sub-grid detail: two octaves at 1.3 and 2.9 cycles a metre, drifting upwards, on
+            // lattices turned off the world axes.
+            vec3 q = kNoiseTurn * (p + vec3(0.0, -0.3 * smokeTime, 0.0));
+            float detail = 0.55 + 0.6 * smokeNoise(q * 1.3) + 0.3 * (smokeNoise(kNoiseTurn * q * 2.9) - 0.5);
             float density = st.r * smokeDensityScale * detail;
             float stepT = exp(-kSmokeSigma * density * dt);
             vec3 lit = kSmokeAlbedo * (ambient + sunColour * st.g) * exposure;

@@ -135,7 +135,9 @@ TEST(SmokeLifetime, FadesOutAndFinishes) {
 }
 
 TEST(SmokeExport, TransmittanceAndPackedTexture) {
-    SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, testlevels::small(24));
+    // Open to the sky, so the shadow under the cloud is the cloud's own.
+    const map::Level open = testlevels::openRoom({-2.5, 0, -2.5}, {2.5, 2.75, 2.5});
+    SmokeVolume vol = SmokeVolume::create(open, {}, {0, 0.1, 0}, testlevels::small(24));
     for (int i = 0; i < 60; ++i) vol.step(1.0 / 30);
     EXPECT_EQ(vol.transmittance().size(), vol.grid().cells());
     vol.computeTransmittance({0, 1, 0});  // sun straight above
@@ -150,7 +152,9 @@ TEST(SmokeExport, TransmittanceAndPackedTexture) {
         EXPECT_GE(t, 0.f);
         prev = t;
     }
-    EXPECT_LT(prev, 0.9f) << "the floor under the cloud is in its shadow";
+    const Vec3 above = g.toCellCoords({0, 0.4, 0});
+    EXPECT_LT(vol.transmittance()[g.index(ci, static_cast<int>(std::lround(above.y)), ck)], 0.9f)
+        << "the air under the cloud's top is in its shadow";
     // A slanted light gives values in [0, 1] too.
     vol.computeTransmittance({0.6, 0.5, -0.3});
     std::string why;
@@ -170,6 +174,31 @@ TEST(SmokeExport, TransmittanceAndPackedTexture) {
         nonZero += rg8[2 * i] != 0;
     }
     EXPECT_GT(nonZero, 50u);
+}
+
+// Built cells block the light: smoke under a roof is in the roof's shadow (the sun lit it through
+// the roof before), while the sky above an open level's bounds is no roof.
+TEST(SmokeExport, RoofsShadowTheSmoke) {
+    map::Level l;  // a floor, and a roof over the -x side at 2 m
+    l.brushes.push_back(testlevels::box({-4, -0.25, -4}, {4, 0, 4}));
+    l.brushes.push_back(testlevels::box({-4, 2.0, -4}, {-0.25, 2.25, 4}));
+    testlevels::finish(l);
+    SmokeVolume vol = SmokeVolume::create(l, {}, {0, 0.1, 0}, testlevels::small(24));
+    for (int i = 0; i < 45; ++i) vol.step(1.0 / 30);
+    vol.computeTransmittance({0, 1, 0});  // sun straight above
+    const GridInfo& g = vol.grid();
+    auto at = [&](const Vec3& p) {
+        const Vec3 c = g.toCellCoords(p);
+        return vol.transmittance()[g.index(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)),
+                                           static_cast<int>(std::lround(c.z)))];
+    };
+    std::cout << "under the roof " << at({-2.5, 0.5, 2.5}) << ", in the open " << at({2.5, 0.5, 2.5}) << ", under the cloud "
+              << at({0.5, 0.5, 0}) << "\n";
+    EXPECT_LT(at({-2.5, 0.5, 2.5}), 1e-3f) << "under the roof, away from the smoke";
+    EXPECT_LT(at({-1.0, 1.5, 0}), 1e-3f) << "under the roof, in the smoke";
+    EXPECT_GT(at({2.5, 0.5, 2.5}), 0.5f) << "in the open, away from the smoke";
+    std::string why;
+    EXPECT_TRUE(vol.validate(&why)) << why;
 }
 
 TEST(SmokeManager, KeepsAtMostNAndDropsFinished) {

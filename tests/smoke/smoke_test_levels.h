@@ -72,6 +72,15 @@ inline void addRoom(map::Level& l, const Vec3& mn, const Vec3& mx, double t) {
     l.brushes.push_back(box({mn.x, mn.y, mx.z}, {mx.x, mx.y, mx.z + t}));                  // +z wall
 }
 
+// The same room without its ceiling: open to the sky (the light reaches in from above).
+inline map::Level openRoom(const Vec3& mn, const Vec3& mx, double t = 0.25) {
+    map::Level l;
+    addRoom(l, mn, mx, t);
+    l.brushes.erase(l.brushes.begin() + 1);  // addRoom's second brush is the ceiling
+    finish(l);
+    return l;
+}
+
 inline map::Level closedRoom(const Vec3& mn, const Vec3& mx, double t = 0.25) {
     map::Level l;
     addRoom(l, mn, mx, t);
