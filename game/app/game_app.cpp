@@ -338,7 +338,7 @@ void GameApp::stepSimulation() {
     const auto& events = sim_->events();
     audio_->onEvents(events);
     combat_->onTick(events);
-    smoke_->onTick(events, sim_->player());
+    smoke_->onTick(events, *sim_);
     hitMarker_ = std::max(0.0, hitMarker_ - 1.0 / 15.0);  // fades over a quarter second
     for (const auto& e : events)
         if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;

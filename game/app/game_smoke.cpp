@@ -1,6 +1,8 @@
 // See game_smoke.h.
 #include "app/game_smoke.h"
 
+#include "smoke_obstacles.h"
+
 #include "ssao/ssao_compositor.h"
 
 #include <iostream>
@@ -30,7 +32,7 @@ bool GameSmoke::spawn(const Vec3& where) {
     }
 }
 
-void GameSmoke::onTick(const std::vector<sim::SimEvent>& events, const sim::PlayerState& player) {
+void GameSmoke::onTick(const std::vector<sim::SimEvent>& events, const sim::Simulation& sim) {
     // A shot carves up to what it hit (its Impact follows it in the same tick), else its range.
     const sim::SimEvent* shot = nullptr;
     auto carve = [this](const sim::SimEvent& s, double length) {
@@ -49,13 +51,7 @@ void GameSmoke::onTick(const std::vector<sim::SimEvent>& events, const sim::Play
     if (shot) carve(*shot, kMaxShotRange);
 
     if (manager_.volumes().empty() || ++ticks_ % kTicksPerStep != 0) return;
-    // The player pushes the smoke: an axis-aligned box the size of the capsule.
-    smoke::MovingObstacle body;
-    body.shape = smoke::MovingObstacle::Shape::Box;
-    body.halfExtents = {0.35, player.height * 0.5, 0.35};
-    body.centre = player.feet + Vec3{0, player.height * 0.5, 0};
-    body.velocity = player.velocity;
-    manager_.setMovingObstacles({body});
+    manager_.setMovingObstacles(smokeObstacles(sim));
     manager_.step(tickSeconds_ * kTicksPerStep);
     manager_.computeTransmittance(towardSun_);
     dirty_ = true;

@@ -9,7 +9,7 @@
 #include "core/vec3.h"
 #include "map/level.h"
 #include "sim/sim_events.h"
-#include "sim/player_controller.h"
+#include "sim/simulation.h"
 #include "smoke/smoke_manager.h"
 #include "smoke/smoke_textures.h"
 
@@ -26,7 +26,9 @@ public:
     // Releases smoke at `where` now; false (with the reason on stderr) if no grid fits there.
     bool spawn(const Vec3& where);
     // Once per simulation tick, after it: its events and the player's body.
-    void onTick(const std::vector<sim::SimEvent>& events, const sim::PlayerState& player);
+    // After each simulation tick: detonations spawn volumes, shots carve them; every third tick the
+    // volumes step with the player, the props and the grenades pushing the smoke.
+    void onTick(const std::vector<sim::SimEvent>& events, const sim::Simulation& sim);
     // Once per rendered frame: new fields to the GPU (when the smoke stepped) and to the composite.
     void render(ssao::AmbientOcclusion& post);
     std::size_t volumeCount() const { return manager_.volumes().size(); }

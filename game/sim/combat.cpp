@@ -328,7 +328,8 @@ std::vector<GrenadeState> Combat::grenades() const {
     for (const auto& g : grenades_) {
         const btTransform& t = physics_.projectile(g.body).getWorldTransform();
         const btQuaternion q = t.getRotation();
-        out.push_back({g.body, fromBt(t.getOrigin()), q.x(), q.y(), q.z(), q.w(), kGrenadeRadius, g.fuseLeft});
+        out.push_back({g.body, fromBt(t.getOrigin()), q.x(), q.y(), q.z(), q.w(), kGrenadeRadius, g.fuseLeft,
+                       fromBt(physics_.projectile(g.body).getLinearVelocity())});
     }
     return out;
 }

@@ -43,6 +43,7 @@ struct GrenadeState {
     double qx = 0, qy = 0, qz = 0, qw = 1;
     double radius = 0.06;
     double fuseLeft = 0;  // seconds
+    Vec3 velocity;        // m/s
 };
 
 class Combat {

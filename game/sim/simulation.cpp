@@ -45,7 +45,8 @@ std::vector<Simulation::BodyPose> Simulation::bodyPoses() const {
         const btQuaternion q = t.getRotation();
         const bool cylinder = physics_->dynamicShape(i) == PhysicsWorld::BodyShape::Cylinder;
         out.push_back({fromBt(t.getOrigin()), q.x(), q.y(), q.z(), q.w(), physics_->dynamicHalfExtents(i),
-                       cylinder ? BodyPose::Shape::Cylinder : BodyPose::Shape::Box});
+                       cylinder ? BodyPose::Shape::Cylinder : BodyPose::Shape::Box,
+                       fromBt(physics_->dynamicBody(i).getLinearVelocity())});
     }
     return out;
 }

@@ -35,6 +35,7 @@ public:
         double qx = 0, qy = 0, qz = 0, qw = 1;
         Vec3 halfExtents;
         Shape shape = Shape::Box;
+        Vec3 velocity;  // m/s, of the centre
     };
 
     // modelMeshes: world-space triangles of the level's misc_models (static colliders).
