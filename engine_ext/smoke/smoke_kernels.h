@@ -33,8 +33,6 @@ OBSCURA_SMOKE_INLINE float sel(bool c, float a, float b) {
     std::memcpy(&o, &r, 4);
     return o;
 }
-OBSCURA_SMOKE_INLINE float minf(float a, float b) { return b < a ? b : a; }  // minps/maxps in vector code
-OBSCURA_SMOKE_INLINE float maxf(float a, float b) { return b > a ? b : a; }
 
 struct Dims {
     int nx, ny, nz;
@@ -204,10 +202,9 @@ OBSCURA_SMOKE_INLINE float advectForward(const float* f, const Dims& d, std::ptr
     return sampleNear(f, c, d, -qx, -qy, -qz);
 }
 
-// MacCormack correction (Selle et al. 2008), in two halves the optimised path runs as separate
-// loops (fewer live registers): hat + (orig - reverse) / 2, then clamped to the range of the
-// source values the forward trace blended.
-// (Templated halves: the optimised path's vectors run the same expressions.)
+// MacCormack correction (Selle et al. 2008): hat + (orig - reverse) / 2, then clamped to the range
+// of the source values the forward trace blended. Templated halves: the optimised path's vectors
+// run the same expressions.
 template <class F>
 OBSCURA_SMOKE_INLINE F macCormackValue(F hat, F orig, F reverse) { return hat + 0.5f * (orig - reverse); }
 template <class F>

@@ -112,7 +112,7 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
     // Optical depth swept slice by slice along the dominant axis a, from the light's side: each
     // cell adds half its own density and half the density one slice toward the light (bilinear
     // at the light direction's constant offset) to that point's depth. Cells of one slice are
-    // independent: the slice's rows go to the thread pool. Built cells (walls, roofs, props'
+    // independent: the slice's rows go to the thread pool. Built cells (walls, roofs, models'
     // meshes) are opaque: each adds kOpaque to the depth, so the smoke under a roof or behind a
     // wall is in its shadow (without it the sun lit smoke in a roofed corridor through the roof,
     // and the slices' bilinear steps showed as bright blocks).
