@@ -8,11 +8,9 @@
 // Prints "aoref mae=... rmse=... bias=... pixels=..." over the pixels that see geometry.
 #include "core/image.h"
 #include "map/map_compile.h"
-#include "render/model_loader.h"
+#include "mesh/model_path.h"
+#include "mesh/ogre_mesh_reader.h"
 #include "ssao/ao_reference.h"
-
-#include <Ogre.h>
-#include <OgreDefaultHardwareBufferManager.h>
 
 #include <boost/program_options.hpp>
 
@@ -40,37 +38,29 @@ std::vector<TriangleMesh> levelTriangles(const map::Level& level) {
     return {m};
 }
 
-// misc_model meshes through OGRE without a render system (software buffers), placed exactly as
-// the game places them (render::modelTransform).
+// misc_model meshes read by the plain .mesh reader, placed exactly as the game places them
+// (mesh::Transform is render::modelTransform, bit for bit).
 void addModelTriangles(const map::Level& level, const std::vector<std::string>& searchDirs, std::vector<TriangleMesh>& out) {
-    if (level.models.empty()) return;
-    auto* logs = new Ogre::LogManager();
-    logs->createLog("aoref-ogre.log", true, false, true);  // suppress output: warnings about materials
-    {
-    Ogre::Root root("", "", "");
-    Ogre::DefaultHardwareBufferManager buffers;
-    auto& rgm = Ogre::ResourceGroupManager::getSingleton();
     for (const auto& m : level.models) {
-        namespace fs = std::filesystem;
-        fs::path file;
-        for (const auto& dir : searchDirs)
-            if (fs::is_regular_file(fs::path(dir) / m.mesh)) {
-                file = fs::canonical(fs::path(dir) / m.mesh);
-                break;
-            }
+        const std::string file = mesh::findModelFile(m.mesh, searchDirs);
         if (file.empty()) throw std::runtime_error(level.sourcePath + ": misc_model mesh '" + m.mesh + "' not found");
-        const std::string group = "AoRefModels";
-        if (!rgm.resourceGroupExists(group)) rgm.createResourceGroup(group);
-        rgm.addResourceLocation(file.parent_path().string(), "FileSystem", group);
-        rgm.initialiseResourceGroup(group);
-        Ogre::MeshPtr mesh = Ogre::MeshManager::getSingleton().load(file.filename().string(), group);
-        out.push_back(render::meshTriangles(*mesh, render::modelTransform(m)));
-        const auto& b = mesh->getBounds();
-        std::cerr << "aoref: model " << m.mesh << " bounds " << b.getMinimum() << " .. " << b.getMaximum() << "\n";
+        const mesh::MeshFile meshFile = mesh::readOgreMesh(file);
+        out.push_back(mesh::meshTriangles(meshFile, {m.origin, m.yaw, m.scale}));
+        std::cerr << "aoref: model " << m.mesh << " bounds ";
+        if (meshFile.bounds) {
+            // as Ogre::Vector3 prints (single precision)
+            auto print = [](const Vec3& v) {
+                std::cerr << "Vector3(" << static_cast<float>(v.x) << ", " << static_cast<float>(v.y) << ", "
+                          << static_cast<float>(v.z) << ")";
+            };
+            print(meshFile.bounds->min);
+            std::cerr << " .. ";
+            print(meshFile.bounds->max);
+        } else {
+            std::cerr << "(none in the file)";
+        }
+        std::cerr << "\n";
     }
-    Ogre::MeshManager::getSingleton().removeAll();
-    }  // the root goes before its log
-    delete logs;
 }
 }  // namespace
 
