@@ -6,9 +6,11 @@
 namespace obscura::smoke {
 
 enum class PressureSolver {
-    Jacobi,               // two buffers, p' = (sum of neighbours + rhs) / n
-    RedBlackGaussSeidel,  // in place, red cells then black: about twice Jacobi's convergence per
-                          // iteration at the same memory traffic (measured: see README.md)
+    MultigridCG,          // conjugate gradients preconditioned by a multigrid V-cycle (McAdams et al.
+                          // 2010), iterated to pressureTolerance: the default (README.md, "Pressure")
+    Jacobi,               // fixed pressureIterations sweeps, two buffers (for comparison)
+    RedBlackGaussSeidel,  // fixed pressureIterations sweeps, in place, red cells then black: about
+                          // twice Jacobi's convergence per sweep (for comparison)
 };
 
 // Which build of the optimised solver runs (smoke_solver_fast.cpp). Both give bitwise-equal
@@ -24,33 +26,44 @@ struct SmokeSettings {
     int resolution = 64;
     double cellSize = 0.25;
 
-    // Pressure projection. 20 red-black Gauss-Seidel iterations, warm-started from the previous
-    // step's pressure: measured to leave a max residual divergence of ~3 % of the pre-projection
-    // one after the first second (README.md); 40 only halves it, at twice the cost.
-    int pressureIterations = 20;
-    PressureSolver pressureSolver = PressureSolver::RedBlackGaussSeidel;
+    // Pressure projection (MultigridCG): iterate until the largest divergence left is at most
+    // pressureTolerance times the largest before the projection. 2.5e-4 leaves a factor 4 under the
+    // 1e-3 the solver promises (the recursive residual CG stops on drifts a little from the true
+    // one); measured in play it takes 2-6 iterations (README.md). The absolute floor: below
+    // 1e-5 1/s (a cell's volume changing by 0.001 % a second) a flow counts as divergence-free
+    // even if the relative figure is not reached (a nearly still cloud).
+    PressureSolver pressureSolver = PressureSolver::MultigridCG;
+    double pressureTolerance = 2.5e-4;
+    double pressureAbsoluteTolerance = 1e-5;  // 1/s
+    int pressureMaxIterations = 40;  // a guard (absurd inputs); play never comes near it
+    int pressureIterations = 20;     // Jacobi / red-black Gauss-Seidel: fixed sweeps per substep
 
     int threads = 0;  // 0: hardware concurrency. Results are bitwise identical for any count.
     VectorIsa vectorIsa = VectorIsa::Best;  // results are bitwise identical for either
 
-    // Lifetime (CS-style smoke grenade): emit for 3 s, hold, fade over the last 4 s, gone at 18 s.
+    // Lifetime, like a Counter-Strike 2 smoke: the canister releases its gas in the first
+    // emitTime seconds (the cloud blooms to its size in about a second), the cloud holds, and
+    // thins out over the last fadeTime seconds; gone at 18 s.
     double lifetime = 18.0;
-    double emitTime = 3.0;
-    double fadeTime = 4.0;  // the density dissipation ramps up over this long before `lifetime`
+    double emitTime = 1.2;
+    double fadeTime = 3.5;  // the density decay ramps from 0 to fadeDissipation over this long
 
-    // Emitter: a sphere at the detonation point (lifted by emitterLift so a grenade lying on the
-    // floor does not sit half in it).
-    double emitterRadius = 0.5;      // metres: the canister's plume at 2 cells wide
-    double emitterLift = 0.3;        // metres above the detonation point
-    double emitDensity = 30.0;       // density units per second inside the sphere; the outflow
-                                     // below dilutes it to ~2 at the canister, ~0.8 in the cloud
-    double emitTemperature = 3.0;    // kelvin above ambient: a gentle rise, the cloud still hugs
-                                     // the floor as a dome instead of shooting to the ceiling
-    double emitExpansion = 20.0;     // 1/s volume source in the sphere (~10 m^3/s of gas): the
-                                     // canister pushes the cloud out to a ~3.5 m radius dome
-                                     // (measured in a 40 x 4 x 40 m hall: 43 m^3 above density 0.1
-                                     // after 9 s, like a CS smoke); faces near it run at ~4 m/s
-    Vec3 emitVelocity{0, 0, 0};      // m/s added inside the sphere each step (e.g. a jet direction)
+    // Emitter. The gas enters the cells nearest the canister that the canister's own cell reaches
+    // through open faces (never through a wall), as many as a free sphere of emitterRadius holds
+    // (fewer only in a space smaller than that), at emitGasRate m^3/s in total wherever the
+    // grenade lies: the gas is a volume source (divergence) in the pressure equation, and carries
+    // emitSmokeDensity and emitTemperature in with it, so the cloud's density is the gas's,
+    // diluted only by mixing.
+    double emitterRadius = 0.75;   // metres (113 cells of 0.25 m): wide enough that the gas leaves
+                                   // it at ~6 m/s, not at the 20 m/s a 0.5 m sphere would need
+    double emitterLift = 0.3;      // metres above the detonation point (the canister's plume)
+    double emitGasRate = 50.0;     // m^3/s for emitTime: 60 m^3 of smoke, a ~3 m radius dome on
+                                   // open floor within a second or so (CS2's smoke is ~3.5 m wide)
+    double emitSmokeDensity = 1.0; // density units of the released gas: 1 = extinction shadowSigma
+                                   // per metre (the renderer's own scale; README.md, "Density")
+    double emitTemperature = 1.0;  // kelvin above ambient: the dome rolls a little, then settles as
+                                   // it cools (3 K lifted the whole cloud: README.md, "Tuning")
+    Vec3 emitVelocity{0, 0, 0};    // m/s set on the emitter cells' faces (e.g. a jet direction)
 
     // Forces. buoyancy (Fedkiw et al. 2001): a = (buoyancy * T - densityWeight * density) up.
     double buoyancy = 0.12;          // m/s^2 per kelvin: with emitTemperature the plume lifts at
@@ -59,24 +72,23 @@ struct SmokeSettings {
     double vorticity = 0.35;         // confinement epsilon (dimensionless, x cell size): keeps
                                      // billows alive at 25 cm cells without visible noise
     double maxSpeed = 20.0;          // m/s velocity clamp: a guard against blow-ups, never reached
-                                     // in normal play (the emitter pushes ~4 m/s)
+                                     // in normal play
 
-    // Dissipation, per second (exponential).
-    double densityDissipation = 0.02;     // smoke thins slowly while the grenade lasts
+    // Modelled decays, per second (exponential). Smoke mass is otherwise conserved exactly by the
+    // transport: there is no dissipation for numerical reasons and no renormalisation.
+    double densityDissipation = 0.0;      // none while the cloud holds (CS2 smoke does not thin)
     double temperatureDissipation = 0.6;  // the plume cools within a couple of seconds, then settles
-    double velocityDissipation = 0.15;    // stops the cloud drifting forever in a closed room
-    double fadeDissipation = 2.5;         // extra density decay at the end of the fade: ramped over
-                                          // fadeTime it leaves ~1 % (e^-5) at `lifetime`
+    double velocityDissipation = 1.0;     // drag of the unresolved turbulence: without it the bloom's
+                                          // vortex ring carries the cloud off the floor (at 0.15 /s
+                                          // its centre of mass rose from 1.4 to 4.2 m in 8 s; at 1 /s
+                                          // it stays at 1.4-1.7 m all its life, like CS2's dome)
+    double fadeDissipation = 3.0;         // the end of the grenade: ramped over fadeTime it leaves
+                                          // e^-5.25 ~ 0.5 % at `lifetime`
 
-    // MacCormack advection is not conservative (Selle et al. trade that for sharpness): near walls
-    // and in converging flow it gains or loses several % per second. On: after each advection the
-    // density is scaled so its total equals the total before, minus what left through open
-    // border faces, times the dissipation (a global factor, invisible; README.md has figures).
-    bool conserveMass = true;
-
-    // Advection safety: a step is split so no trace goes further than maxCfl cells; each trace
-    // is in any case clamped to one cell per axis, which is what keeps smoke from crossing a
-    // one-cell wall (see README.md).
+    // Time stepping: a step is split so that no cell's outflow courant number (the sum of its
+    // outgoing face speeds x dt / h) exceeds maxCfl: the flux transport then moves smoke at its
+    // true speed and the outflow cap (positivity) rarely engages; each velocity trace is in any
+    // case clamped to one cell per axis, which keeps smoke from crossing a one-cell wall.
     double maxCfl = 1.0;
     int maxSubsteps = 4;
     double maxStep = 0.1;  // seconds: longer dt values are clamped (a hitch should not explode it)
@@ -86,7 +98,9 @@ struct SmokeSettings {
 
     // Self-shadowing: transmittance = exp(-shadowSigma * integral of density along the light ray).
     double shadowSigma = 4.0;  // per metre per density unit: density 1 over 25 cm passes e^-1
-    double exportDensityScale = 1.0;  // density mapped to 1.0 (255) in the packed texture
+    double exportDensityScale = 1.25;  // density mapped to 1.0 (255) in exportRG8: the transport
+                                       // never exceeds emitSmokeDensity by more than ~2 % (the
+                                       // canister's cells while emitting), so nothing saturates
 };
 
 }  // namespace obscura::smoke

@@ -3,8 +3,7 @@
 // by what the CPU supports (SmokeSettings::vectorIsa). Both round identically: strict IEEE, no FMA
 // (-ffp-contract=off, and the AVX2 path does not enable FMA), and the same operations in the same
 // order, so the two give bitwise-equal fields (tested) and a replay recorded on one machine plays
-// the same on another. Measured at 64^3 on 2 cores: 9.0 ms a step with SSE2, 6.4 with AVX2
-// (README.md).
+// the same on another (README.md has the step times of both).
 //
 // Why a pragma and not -mavx2 on a second file: inline functions from the std headers included
 // before it stay baseline code, so no AVX2 copy of a shared template can win at link time and
@@ -26,8 +25,6 @@
 #include "smoke/thread_pool.h"
 
 namespace obscura::smoke {
-
-void projectBorderFaces(SmokeState& s);  // smoke_solver_reference.cpp (shared, O(n^2))
 
 namespace isa_baseline {
 #define OBSCURA_SMOKE_LANES 4
@@ -60,11 +57,33 @@ bool avx2PathAvailable() {
 #endif
 }
 
-void substepFast(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt) {
+namespace {
+bool useAvx2(VectorIsa isa) {
 #ifdef OBSCURA_SMOKE_HAS_AVX2_PATH
-    if (st.vectorIsa == VectorIsa::Best && avx2PathAvailable()) return isa_avx2::substepFastImpl(s, st, pool, dt);
+    return isa == VectorIsa::Best && avx2PathAvailable();
+#else
+    (void)isa;
+    return false;
 #endif
-    isa_baseline::substepFastImpl(s, st, pool, dt);
+}
+}  // namespace
+
+#ifdef OBSCURA_SMOKE_HAS_AVX2_PATH
+#define OBSCURA_SMOKE_DISPATCH(isa, call) (useAvx2(isa) ? isa_avx2::call : isa_baseline::call)
+#else
+#define OBSCURA_SMOKE_DISPATCH(isa, call) (isa_baseline::call)
+#endif
+
+void substepFast(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt) {
+    OBSCURA_SMOKE_DISPATCH(st.vectorIsa, substepFastImpl(s, st, pool, dt));
+}
+
+float maxOutflowRate(SmokeState& s, ThreadPool& pool) {
+    return isa_baseline::maxOutflowRateImpl(s, pool);  // one light pass: the baseline build is plenty
+}
+
+PressureSolveStats solvePressureFast(SmokeState& s, const SmokeSettings& st, ThreadPool& pool) {
+    return OBSCURA_SMOKE_DISPATCH(st.vectorIsa, solvePressureImpl(s, st, pool));
 }
 
 }  // namespace obscura::smoke

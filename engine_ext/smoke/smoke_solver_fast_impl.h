@@ -3,9 +3,9 @@
 // namespace; the caller picks one at run time. Not a standalone header: the includer provides
 // the std headers, smoke_state.h and thread_pool.h, and the enclosing namespace.
 //
-// z-slabs on the thread pool, fused passes (all five fields advected in one sweep, forces and
-// boundary conditions in one), branch-free boundary handling through the precomputed face masks
-// and diagInv, x-contiguous inner loops. Every value is computed by the same kernel
+// z-slabs on the thread pool, fused passes (the scalars' fluxes and the velocity's forward step in
+// one sweep, their updates in the next; forces and boundary conditions in one), branch-free
+// boundary handling through the precomputed face masks and diagInv, x-contiguous inner loops. Every value is computed by the same kernel
 // (smoke_kernels.h) as in the reference path; reductions go through per-z-plane partials combined
 // in plane order, so the thread count never changes a bit of the result.
 namespace {
@@ -22,17 +22,16 @@ void forPlanes(ThreadPool& pool, int k0, int k1, const Fn& fn) {  // planes [k0,
 // Row kernels: everything they use arrives by value, so the compiler can keep it in registers
 // (stores to float arrays could otherwise alias a captured float and force reloads that stop
 // the vectoriser). Each processes x in [i0, i1) of one row starting at index `row`.
-struct Fields5 {
-    const float *d, *t, *u, *v, *w;
+struct Velocity {
+    const float *u, *v, *w;
 };
-struct Out5 {
-    float *d, *t, *u, *v, *w;
+struct VelocityOut {
+    float *u, *v, *w;
 };
 
-// Each field gets its own loop over the row (the row's data stays in L1): one fused loop over
-// all five needs more live vectors than there are registers and spills (measured: 1.45x slower).
-// The trace of a row's samples is computed once into scratch rows and shared by the fields that
-// live there (density and temperature both sit at cell centres) and by both MacCormack passes.
+// Each velocity component gets its own loop over the row (the row's data stays in L1): one fused
+// loop over all of them needs more live vectors than there are registers and spills. The trace
+// of a row's samples is computed once into scratch rows and shared by both MacCormack passes.
 struct Trace {
     float *x, *y, *z;
 };
@@ -106,11 +105,6 @@ OBSCURA_SMOKE_INLINE void rangeVec(const float* o, const Dims& d, VecF px, VecF 
     lo = kernels::blockMin(a0, a1, a2, a3, b0, b1, b2, b3);
     hi = kernels::blockMax(a0, a1, a2, a3, b0, b1, b2, b3);
 }
-OBSCURA_SMOKE_INLINE VecF fluidMask(const std::uint8_t* cls) {  // 1 for fluid cells, 0 elsewhere
-    VecF keep;
-    for (int l = 0; l < kLanes; ++l) keep[l] = cls[l] == kFluid ? 1.f : 0.f;
-    return keep;
-}
 
 // Runs fn(i) for vectors covering [i0, i1): the last one is moved back to end at i1, so it
 // recomputes a few lanes of the one before it (same inputs, same values). Rows are at least
@@ -129,10 +123,8 @@ void forwardRow(const float* f, float* hat, Trace q, Dims d, std::ptrdiff_t row,
 }
 
 // MacCormack: the reverse sample from hat's block at +q, the clamp range from f's block at -q
-// (the same steps mirrored), times the dissipation factor, times 0 outside fluid cells when a
-// class array is given.
-void correctRow(const float* f, const float* hat, float* out, Trace q, const std::uint8_t* cls, Dims d, float decay,
-                std::ptrdiff_t row, int i0, int i1) {
+// (the same steps mirrored), times the dissipation factor.
+void correctRow(const float* f, const float* hat, float* out, Trace q, Dims d, float decay, std::ptrdiff_t row, int i0, int i1) {
     forVectors(i0, i1, [&](int i) {
         const std::ptrdiff_t c = row + i;
         const VecF qx = load(q.x + i), qy = load(q.y + i), qz = load(q.z + i);
@@ -142,21 +134,16 @@ void correctRow(const float* f, const float* hat, float* out, Trace q, const std
         const VecF value = kernels::macCormackValue(load(hat + c), load(f + c), reverse);
         VecF lo, hi;
         rangeVec(f + c, d, -qx, -qy, -qz, back, lo, hi);
-        VecF r = kernels::clampT(value, lo, hi) * decay;
-        if (cls) r = r * fluidMask(cls + c);
-        store(out + c, r);
+        store(out + c, kernels::clampT(value, lo, hi) * decay);
     });
 }
 
 // Per-plane scratch: three trace rows (SmokeState::rowScratch).
 Trace traceScratch(float* plane, int nx) { return {plane, plane + nx, plane + 2 * nx}; }
 
-void advectForwardRow(Fields5 f, Out5 hat, Dims d, float s, std::ptrdiff_t row, int i0, int i1, float* scratch) {
+void advectForwardRow(Velocity f, VelocityOut hat, Dims d, float s, std::ptrdiff_t row, int i0, int i1, float* scratch) {
     using namespace kernels;
     const Trace q = traceScratch(scratch, d.nx);
-    traceRow<kAtCell>(f.u, f.v, f.w, d, s, row, i0, i1, q);
-    forwardRow(f.d, hat.d, q, d, row, i0, i1);
-    forwardRow(f.t, hat.t, q, d, row, i0, i1);
     traceRow<kAtU>(f.u, f.v, f.w, d, s, row, i0, i1, q);
     forwardRow(f.u, hat.u, q, d, row, i0, i1);
     traceRow<kAtV>(f.u, f.v, f.w, d, s, row, i0, i1, q);
@@ -165,24 +152,92 @@ void advectForwardRow(Fields5 f, Out5 hat, Dims d, float s, std::ptrdiff_t row, 
     forwardRow(f.w, hat.w, q, d, row, i0, i1);
 }
 
-void advectCorrectRow(Fields5 f, Fields5 hat, Out5 out, const std::uint8_t* cls, Dims d, float s, float decayD,
-                      float decayT, float decayV, std::ptrdiff_t row, int i0, int i1, float* scratch) {
+void advectCorrectRow(Velocity f, Velocity hat, VelocityOut out, Dims d, float s, float decayV, std::ptrdiff_t row, int i0,
+                      int i1, float* scratch) {
     using namespace kernels;
     const Trace q = traceScratch(scratch, d.nx);
-    traceRow<kAtCell>(f.u, f.v, f.w, d, s, row, i0, i1, q);
-    correctRow(f.d, hat.d, out.d, q, cls, d, decayD, row, i0, i1);
-    correctRow(f.t, hat.t, out.t, q, cls, d, decayT, row, i0, i1);
     traceRow<kAtU>(f.u, f.v, f.w, d, s, row, i0, i1, q);
-    correctRow(f.u, hat.u, out.u, q, nullptr, d, decayV, row, i0, i1);
+    correctRow(f.u, hat.u, out.u, q, d, decayV, row, i0, i1);
     traceRow<kAtV>(f.u, f.v, f.w, d, s, row, i0, i1, q);
-    correctRow(f.v, hat.v, out.v, q, nullptr, d, decayV, row, i0, i1);
+    correctRow(f.v, hat.v, out.v, q, d, decayV, row, i0, i1);
     traceRow<kAtW>(f.u, f.v, f.w, d, s, row, i0, i1, q);
-    correctRow(f.w, hat.w, out.w, q, nullptr, d, decayV, row, i0, i1);
+    correctRow(f.w, hat.w, out.w, q, d, decayV, row, i0, i1);
 }
 
-void scaleRow(float* f, float factor, std::ptrdiff_t begin, std::ptrdiff_t end) {
+// ---- Flux-form transport of density and temperature (kernels::faceFluxes) ----
+struct Masks3 {
+    const std::uint8_t *u, *v, *w;
+};
+
+// Each fluid cell's outflow rate (1/s; 0 elsewhere); returns the row's maximum. Out of line: see
+// smoke_multigrid_ops.h on inlined `omp simd reduction` loops.
+__attribute__((noinline)) float outflowRow(const float* u, const float* v, const float* w, Masks3 m, const std::uint8_t* cls, float* out, Dims d,
+                 float invH, std::ptrdiff_t row, int i0, int i1) {
+    const std::uint8_t *mu = m.u, *mv = m.v, *mw = m.w;
+    float worst = 0.f;
+#pragma omp simd reduction(max : worst)
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i, y = c + d.sy, z = c + d.sz;
+        const float r = kernels::outflowRate(u[c], u[c + 1], v[c], v[y], w[c], w[z], mu[c] != 0, mu[c + 1] != 0, mv[c] != 0,
+                                             mv[y] != 0, mw[c] != 0, mw[z] != 0, invH);
+        out[c] = kernels::sel(cls[c] == kFluid, r, 0.f);
+        worst = std::max(worst, out[c]);
+    }
+    return worst;
+}
+
+// One row of faces along one axis. Every pointer is at the row's start shifted to the stencil
+// slot: the face's own velocity and mask; the masks of the faces below and above; the rate of
+// the cells below (b) and above (d); each scalar at a, b, d, e (see kernels::faceFluxes).
+struct FaceRow {
+    const float* vel;
+    const std::uint8_t *open, *openLo, *openHi;
+    const float *rateB, *rateD;
+    const float *da, *db, *dd, *de, *ta, *tb, *td, *te;
+    float *outD, *outT;
+};
+void fluxRow(FaceRow f, float courantPerSpeed, float dt, int i0, int i1) {
+    const float* vel = f.vel;
+    const std::uint8_t *open = f.open, *lo = f.openLo, *hi = f.openHi;
+    const float *rb = f.rateB, *rd = f.rateD, *da = f.da, *db = f.db, *dd = f.dd, *de = f.de;
+    const float *ta = f.ta, *tb = f.tb, *td = f.td, *te = f.te;
+    float *outD = f.outD, *outT = f.outT;
 #pragma omp simd
-    for (std::ptrdiff_t c = begin; c < end; ++c) f[c] *= factor;
+    for (int i = i0; i < i1; ++i) {
+        float fd, ft;
+        kernels::faceFluxes(vel[i] * courantPerSpeed, open[i] != 0, lo[i] != 0, hi[i] != 0, rb[i], rd[i], dt, da[i], db[i], dd[i],
+                            de[i], ta[i], tb[i], td[i], te[i], fd, ft);
+        outD[i] = fd;
+        outT[i] = ft;
+    }
+}
+
+// The row of lower faces on `axis` of the cells in row (j, k), for fluxRow. The z faces of the
+// first interior plane and of the top ghost plane have no cell two below / one above inside the
+// array: those slots take the face cell's own (their values never count: a missing behind-cell
+// only feeds the slope of a ghost donor, which holds 0).
+FaceRow faceRow(SmokeState& s, int axis, int j, int k) {
+    const Dims d = s.dims;
+    const std::ptrdiff_t stride = axis == 0 ? 1 : axis == 1 ? d.sy : d.sz;
+    const std::ptrdiff_t row = d.sy * j + d.sz * k;
+    const bool bottom = axis == 2 && k == 1, top = axis == 2 && k == d.nz - 1;
+    const std::ptrdiff_t a = bottom ? -stride : -2 * stride, e = top ? 0 : stride;
+    const std::vector<std::uint8_t>& m = s.faceMask[axis];
+    const std::vector<float>& vel = axis == 0 ? s.u : axis == 1 ? s.v : s.w;
+    const float *D = s.density.data() + row, *T = s.temperature.data() + row, *R = s.outflow.data() + row;
+    return {vel.data() + row,         m.data() + row,   m.data() + row - stride, m.data() + row + (top ? 0 : stride),
+            R - stride,               R,                D + a,                   D - stride,
+            D,                        D + e,            T + a,                   T - stride,
+            T,                        T + e,            s.flux[0][axis].data() + row, s.flux[1][axis].data() + row};
+}
+
+void updateRow(const float* f, const float* fx, const float* fy, const float* fz, float* out, Dims d, float decay,
+               std::ptrdiff_t row, int i0, int i1) {
+#pragma omp simd
+    for (int i = i0; i < i1; ++i) {
+        const std::ptrdiff_t c = row + i;
+        out[c] = kernels::fluxUpdate(f[c], fx[c], fx[c + 1], fy[c], fy[c + d.sy], fz[c], fz[c + d.sz], decay);
+    }
 }
 
 void curlRow(const float* u, const float* v, const float* w, float* ox, float* oy, float* oz, float* mag, Dims d,
@@ -212,10 +267,6 @@ void confinementRow(float* ox, float* oy, float* oz, const float* mag, Dims d, f
     }
 }
 
-struct Masks3 {
-    const std::uint8_t *u, *v, *w;
-};
-
 void forcesRow(float* u, float* v, float* w, const float* ox, const float* oy, const float* oz, const float* T,
                const float* D, Masks3 m, Dims d, float dt, float buoy, float weight, float vmax, std::ptrdiff_t row, int i0,
                int i1) {
@@ -233,35 +284,55 @@ void forcesRow(float* u, float* v, float* w, const float* ox, const float* oy, c
     }
 }
 
-void advect(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float dt, float decayD, float decayT, float decayV) {
+// Each fluid cell's outflow rate into s.outflow; returns the largest.
+float outflowRates(SmokeState& s, ThreadPool& pool) {
+    const Dims d = s.dims;
+    const Masks3 m{s.faceMask[0].data(), s.faceMask[1].data(), s.faceMask[2].data()};
+    const float invH = 1.f / static_cast<float>(s.grid.cellSize);
+    forPlanes(pool, 1, d.nz - 1, [&](int k) {
+        float worst = 0.f;
+        for (int j = 1; j < d.ny - 1; ++j)
+            worst = std::max(worst, outflowRow(s.u.data(), s.v.data(), s.w.data(), m, s.cellClass.data(), s.outflow.data(), d, invH,
+                                               d.sy * j + d.sz * k, 1, d.nx - 1));
+        s.planeA[static_cast<std::size_t>(k)] = worst;
+    });
+    float worst = 0.f;
+    for (int k = 1; k < d.nz - 1; ++k) worst = std::max(worst, s.planeA[static_cast<std::size_t>(k)]);
+    return worst;
+}
+
+void advect(SmokeState& s, ThreadPool& pool, float dt, float decayD, float decayT, float decayV) {
     const Dims d = s.dims;
     const float scale = dt / static_cast<float>(s.grid.cellSize);
-    const Fields5 f{s.density.data(), s.temperature.data(), s.u.data(), s.v.data(), s.w.data()};
-    const Out5 hat{s.hat[0].data(), s.hat[1].data(), s.hat[2].data(), s.hat[3].data(), s.hat[4].data()};
-    const Fields5 hatIn{hat.d, hat.t, hat.u, hat.v, hat.w};
-    const Out5 out{s.next[0].data(), s.next[1].data(), s.next[2].data(), s.next[3].data(), s.next[4].data()};
-    const std::uint8_t* cls = s.cellClass.data();
+    const Velocity f{s.u.data(), s.v.data(), s.w.data()};
+    const VelocityOut hat{s.velHat[0].data(), s.velHat[1].data(), s.velHat[2].data()};
+    const Velocity hatIn{hat.u, hat.v, hat.w};
+    const VelocityOut out{s.next[2].data(), s.next[3].data(), s.next[4].data()};
 
-    const double outflow = st.conserveMass ? borderOutflow(s, dt) : 0.0;
-    // Pass 1: semi-Lagrangian forward step of all five fields (+ this plane's density total).
-    forPlanes(pool, 1, d.nz - 1, [&](int k) {
+    outflowRates(s, pool);
+    // Pass 1: the scalars' face fluxes (x and y faces of the interior planes, z faces up to the
+    // top ghost plane's) and the velocity's semi-Lagrangian forward step.
+    forPlanes(pool, 1, d.nz, [&](int k) {
+        for (int j = 1; j < d.ny - 1; ++j) fluxRow(faceRow(s, 2, j, k), scale, dt, 1, d.nx - 1);
+        if (k == d.nz - 1) return;
         float* scratch = s.rowScratch.data() + SmokeState::kScratchRows * static_cast<std::size_t>(d.nx) * k;  // this plane's own
-        s.planeSum[static_cast<std::size_t>(k)] = planeDensity(s.density, d, k);
+        for (int j = 1; j < d.ny - 1; ++j) fluxRow(faceRow(s, 0, j, k), scale, dt, 1, d.nx);
+        for (int j = 1; j < d.ny; ++j) fluxRow(faceRow(s, 1, j, k), scale, dt, 1, d.nx - 1);
         for (int j = 1; j < d.ny - 1; ++j) advectForwardRow(f, hat, d, scale, d.sy * j + d.sz * k, 1, d.nx - 1, scratch);
     });
-    // Pass 2: MacCormack correction + clamp, dissipation, no smoke in solid cells.
+    // Pass 2: the scalars from their fluxes (with the modelled decays), the velocity's MacCormack
+    // correction and clamp.
     forPlanes(pool, 1, d.nz - 1, [&](int k) {
         float* scratch = s.rowScratch.data() + SmokeState::kScratchRows * static_cast<std::size_t>(d.nx) * k;
-        for (int j = 1; j < d.ny - 1; ++j)
-            advectCorrectRow(f, hatIn, out, cls, d, scale, decayD, decayT, decayV, d.sy * j + d.sz * k, 1, d.nx - 1, scratch);
-        s.planeSumAfter[static_cast<std::size_t>(k)] = planeDensity(s.next[0], d, k);
+        for (int j = 1; j < d.ny - 1; ++j) {
+            const std::ptrdiff_t row = d.sy * j + d.sz * k;
+            updateRow(s.density.data(), s.flux[0][0].data(), s.flux[0][1].data(), s.flux[0][2].data(), s.next[0].data(), d, decayD,
+                      row, 1, d.nx - 1);
+            updateRow(s.temperature.data(), s.flux[1][0].data(), s.flux[1][1].data(), s.flux[1][2].data(), s.next[1].data(), d,
+                      decayT, row, 1, d.nx - 1);
+            advectCorrectRow(f, hatIn, out, d, scale, decayV, row, 1, d.nx - 1, scratch);
+        }
     });
-    double before = 0, after = 0;
-    for (int k = 1; k < d.nz - 1; ++k) before += s.planeSum[static_cast<std::size_t>(k)];
-    for (int k = 1; k < d.nz - 1; ++k) after += s.planeSumAfter[static_cast<std::size_t>(k)];
-    const float massFactor = massScale(st, before, outflow, after, decayD);
-    if (massFactor != 1.f)
-        forPlanes(pool, 1, d.nz - 1, [&](int k) { scaleRow(out.d, massFactor, d.sz * k + d.sy, d.sz * (k + 1) - d.sy); });
     std::swap(s.density, s.next[0]);
     std::swap(s.temperature, s.next[1]);
     std::swap(s.u, s.next[2]);
@@ -415,7 +486,24 @@ float gradientRow(float* u, float* v, float* w, const float* p, const float* rhs
     return maxRes;
 }
 
-void project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emitFactor) {
+// The multigrid levels' passes on the pool; levels of few planes run on the calling thread (a
+// job's hand-off costs a few microseconds, about what such a level's pass takes).
+#include "smoke/smoke_multigrid_ops.h"
+struct PoolRunner {
+    ThreadPool* pool;
+    template <class Fn>
+    void operator()(int k0, int k1, const Fn& fn) const {
+        constexpr int kMinPoolPlanes = 12;
+        if (k1 - k0 < kMinPoolPlanes) {
+            for (int k = k0; k < k1; ++k) fn(k);
+            return;
+        }
+        forPlanes(*pool, k0, k1, fn);
+    }
+};
+
+// Right-hand side, then the pressure solve; returns the solver's iterations.
+int project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emitFactor) {
     const Dims d = s.dims;
     const float h = static_cast<float>(s.grid.cellSize), invH = 1.f / h, h2 = h * h;
     const float *u = s.u.data(), *v = s.v.data(), *w = s.w.data(), *src = s.source.data(), *dinv = s.diagInv.data();
@@ -428,6 +516,7 @@ void project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emi
         s.planeA[static_cast<std::size_t>(k)] = maxDiv;
     });
 
+    if (st.pressureSolver == PressureSolver::MultigridCG) return mgops::solve(s, st, PoolRunner{&pool}).iterations;
     const int iterations = std::max(0, st.pressureIterations);
     if (st.pressureSolver == PressureSolver::RedBlackGaussSeidel) {
         redBlackGaussSeidel(s, pool, iterations);
@@ -441,6 +530,7 @@ void project(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float emi
             std::swap(s.pressure, s.pressureTmp);
         }
     }
+    return iterations;
 }
 
 void subtractGradient(SmokeState& s, ThreadPool& pool) {
@@ -467,7 +557,7 @@ void substepFastImpl(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, f
     const float decayD = densityDecay(s, st, dt);
     const float decayT = static_cast<float>(std::exp(-st.temperatureDissipation * dt));
     const float decayV = static_cast<float>(std::exp(-st.velocityDissipation * dt));
-    advect(s, st, pool, dt, decayD, decayT, decayV);
+    advect(s, pool, dt, decayD, decayT, decayV);
     setBorderFaces(s);  // the curl reads the border faces: give them this step's values
     const auto t1 = Clock::now();
     forces(s, st, pool, dt);
@@ -475,7 +565,8 @@ void substepFastImpl(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, f
     patchDynamicFaces(s);
     const auto t2 = Clock::now();
     const float emitFactor = s.age < st.emitTime ? 1.f : 0.f;
-    project(s, st, pool, emitFactor);
+    s.projectedSource = emitFactor;
+    const int iterations = project(s, st, pool, emitFactor);
     const auto t3 = Clock::now();
     subtractGradient(s, pool);
     projectBorderFaces(s);
@@ -490,8 +581,10 @@ void substepFastImpl(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, f
         before = std::max(before, s.planeA[static_cast<std::size_t>(k)]);
         after = std::max(after, s.planeB[static_cast<std::size_t>(k)]);
     }
-    s.stats.divergenceBefore = before;
-    s.stats.residual = after;
-    s.stats.pressureIterations = std::max(0, st.pressureIterations);
+    recordProjection(s.stats, before, after, iterations, st.pressureAbsoluteTolerance);
 }
 
+float maxOutflowRateImpl(SmokeState& s, ThreadPool& pool) { return outflowRates(s, pool); }
+PressureSolveStats solvePressureImpl(SmokeState& s, const SmokeSettings& st, ThreadPool& pool) {
+    return mgops::solve(s, st, PoolRunner{&pool});
+}

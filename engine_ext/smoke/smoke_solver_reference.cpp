@@ -1,15 +1,26 @@
 // The scalar reference substep: single-threaded, one field per loop, boundary conditions decided
 // by branching on the cell classes, the pressure stencil's neighbour count recomputed per cell.
-// It shares only the per-value maths (smoke_kernels.h) with the optimised path, so the tests can
-// compare the two (see tests/smoke/smoke_solver_test.cpp for the tolerance).
+// Advection, forces and the relaxation solvers share only the per-value maths (smoke_kernels.h)
+// with the optimised path; the MultigridCG solve runs the optimised path's grid passes
+// (smoke_multigrid_ops.h) as plain scalar loops on one thread. The tests compare the two paths
+// (tests/smoke/smoke_solver_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "smoke/smoke_state.h"
 
 namespace obscura::smoke {
 namespace {
+
+#include "smoke/smoke_multigrid_ops.h"
+struct SerialRunner {
+    template <class Fn>
+    void operator()(int k0, int k1, const Fn& fn) const {
+        for (int k = k0; k < k1; ++k) fn(k);
+    }
+};
 
 using kernels::Dims;
 
@@ -25,12 +36,61 @@ bool faceOpen(const SmokeState& s, std::ptrdiff_t behind, std::ptrdiff_t c) {
     return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
 }
 
-void advectReference(SmokeState& s, const SmokeSettings& st, float dt, float decayD, float decayT, float decayV) {
+// Flux-form transport of density and temperature: every face's fluxes from the stencil of cells
+// along its axis, then each cell from its six faces. A stencil cell outside the array (below the
+// first plane, above the last) is replaced by the face's own cell (its value never counts: see
+// the optimised path's faceRow).
+void transportReference(SmokeState& s, float dt, float decayD, float decayT) {
+    const Dims d = s.dims;
+    const std::size_t n = s.density.size();
+    const float courantPerSpeed = dt / static_cast<float>(s.grid.cellSize);
+    std::vector<float> rate(n, 0.f);
+    forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) { rate[static_cast<std::size_t>(c)] = cellOutflowRate(s, static_cast<std::size_t>(c)); });
+    std::vector<float> flux[2][3];
+    for (auto& f : flux)
+        for (auto& a : f) a.assign(n, 0.f);
+    const std::ptrdiff_t last = static_cast<std::ptrdiff_t>(n) - 1;
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::ptrdiff_t st = axis == 0 ? 1 : axis == 1 ? d.sy : d.sz;
+        const std::vector<float>& vel = axis == 0 ? s.u : axis == 1 ? s.v : s.w;
+        const std::vector<std::uint8_t>& mask = s.faceMask[axis];
+        // Faces: the lower faces of the interior cells and of the upper ghost layer on this axis.
+        const int top[3] = {axis == 0 ? d.nx - 1 : d.nx - 2, axis == 1 ? d.ny - 1 : d.ny - 2, axis == 2 ? d.nz - 1 : d.nz - 2};
+        for (int k = 1; k <= top[2]; ++k)
+            for (int j = 1; j <= top[1]; ++j)
+                for (int i = 1; i <= top[0]; ++i) {
+                    const std::ptrdiff_t c = i + d.sy * j + d.sz * k;
+                    const std::ptrdiff_t a = c - 2 * st >= 0 ? c - 2 * st : c - st, e = c + st <= last ? c + st : c;
+                    const std::size_t ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(c - st),
+                                      ud = static_cast<std::size_t>(c), ue = static_cast<std::size_t>(e);
+                    float fd = 0.f, ft = 0.f;
+                    kernels::faceFluxes(vel[ud] * courantPerSpeed, mask[ud] != 0, mask[ub] != 0, mask[ue] != 0, rate[ub], rate[ud], dt,
+                                        s.density[ua], s.density[ub], s.density[ud], s.density[ue], s.temperature[ua],
+                                        s.temperature[ub], s.temperature[ud], s.temperature[ue], fd, ft);
+                    flux[0][axis][ud] = fd;
+                    flux[1][axis][ud] = ft;
+                }
+    }
+    auto update = [&](std::vector<float>& field, const std::vector<float>* f, float decay) {
+        std::vector<float> out(field);
+        forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) {
+            const std::size_t m = static_cast<std::size_t>(c), x = m + 1, y = m + static_cast<std::size_t>(d.sy),
+                              z = m + static_cast<std::size_t>(d.sz);
+            out[m] = kernels::fluxUpdate(field[m], f[0][m], f[0][x], f[1][m], f[1][y], f[2][m], f[2][z], decay);
+        });
+        field = std::move(out);
+    };
+    update(s.density, flux[0], decayD);
+    update(s.temperature, flux[1], decayT);
+}
+
+// MacCormack advection of the three velocity components by the velocity before the step.
+void advectVelocityReference(SmokeState& s, float dt, float decayV) {
     const Dims d = s.dims;
     const float scale = dt / static_cast<float>(s.grid.cellSize);
     const std::vector<float> u0 = s.u, v0 = s.v, w0 = s.w;  // the velocity every trace uses
     const float *u = u0.data(), *v = v0.data(), *w = w0.data();
-    enum Where { Cell, UFace, VFace, WFace };
+    enum Where { UFace, VFace, WFace };
     struct Trace {
         float x, y, z;
     };
@@ -39,44 +99,25 @@ void advectReference(SmokeState& s, const SmokeSettings& st, float dt, float dec
         switch (where) {
             case UFace: kernels::traceAt<kernels::kAtU>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
             case VFace: kernels::traceAt<kernels::kAtV>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
-            case WFace: kernels::traceAt<kernels::kAtW>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
-            default: kernels::traceAt<kernels::kAtCell>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
+            default: kernels::traceAt<kernels::kAtW>(u, v, w, c, d, scale, t.x, t.y, t.z); break;
         }
         return t;
     };
-    auto advectField = [&](std::vector<float>& field, Where where, float decay, bool scalar) {
-        std::vector<float> hat(field.size(), 0.f), out(field.size(), 0.f);
+    auto advectField = [&](std::vector<float>& field, Where where) {
+        std::vector<float> hat(field.size(), 0.f), out(field);  // cells outside the interior keep their values
         forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) {
             const Trace q = disp(where, c);
             hat[static_cast<std::size_t>(c)] = kernels::advectForward(field.data(), d, c, q.x, q.y, q.z);
         });
         forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) {
-            const std::size_t n = static_cast<std::size_t>(c);
-            if (scalar && s.cellClass[n] != kFluid) return;  // no smoke in solids
             const Trace q = disp(where, c);
-            out[n] = kernels::advectCorrect(field.data(), hat.data(), d, c, q.x, q.y, q.z) * decay;
+            out[static_cast<std::size_t>(c)] = kernels::advectCorrect(field.data(), hat.data(), d, c, q.x, q.y, q.z) * decayV;
         });
-        // Cells outside the interior keep what the optimised path keeps there.
-        for (std::size_t n = 0; n < field.size(); ++n) {
-            const int i = static_cast<int>(n % static_cast<std::size_t>(d.nx));
-            const int j = static_cast<int>((n / static_cast<std::size_t>(d.nx)) % static_cast<std::size_t>(d.ny));
-            const int k = static_cast<int>(n / static_cast<std::size_t>(d.sz));
-            if (i == 0 || j == 0 || k == 0 || i == d.nx - 1 || j == d.ny - 1 || k == d.nz - 1) out[n] = field[n];
-        }
         field = std::move(out);
     };
-    const double outflow = st.conserveMass ? borderOutflow(s, dt) : 0.0;
-    double before = 0, after = 0;
-    for (int k = 1; k < d.nz - 1; ++k) before += planeDensity(s.density, d, k);
-    advectField(s.density, Cell, decayD, true);
-    for (int k = 1; k < d.nz - 1; ++k) after += planeDensity(s.density, d, k);
-    const float massFactor = massScale(st, before, outflow, after, decayD);
-    if (massFactor != 1.f)
-        forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) { s.density[static_cast<std::size_t>(c)] *= massFactor; });
-    advectField(s.temperature, Cell, decayT, true);
-    advectField(s.u, UFace, decayV, false);
-    advectField(s.v, VFace, decayV, false);
-    advectField(s.w, WFace, decayV, false);
+    advectField(s.u, UFace);
+    advectField(s.v, VFace);
+    advectField(s.w, WFace);
 }
 
 void forcesReference(SmokeState& s, const SmokeSettings& st, float dt) {
@@ -148,9 +189,8 @@ void projectReference(SmokeState& s, const SmokeSettings& st, float emitFactor) 
         s.rhs[m] = kernels::pressureRhs(div, s.source[m] * emitFactor, h2);
         before = std::max(before, std::fabs(div - s.source[m] * emitFactor));
     });
-    s.stats.divergenceBefore = before;
 
-    const int iterations = std::max(0, st.pressureIterations);
+    int iterations = std::max(0, st.pressureIterations);
     auto update = [&](const std::vector<float>& from, std::vector<float>& to, std::ptrdiff_t c) {
         const std::size_t m = static_cast<std::size_t>(c);
         if (s.cellClass[m] != kFluid) return;
@@ -158,7 +198,8 @@ void projectReference(SmokeState& s, const SmokeSettings& st, float emitFactor) 
         const float sum = referenceNeighbours(s, from, c, count);
         to[m] = count > 0 ? kernels::pressureUpdate(sum, s.rhs[m], 1.f / static_cast<float>(count)) : 0.f;
     };
-    for (int it = 0; it < iterations; ++it) {
+    if (st.pressureSolver == PressureSolver::MultigridCG) iterations = mgops::solve(s, st, SerialRunner{}).iterations;
+    else for (int it = 0; it < iterations; ++it) {
         if (st.pressureSolver == PressureSolver::RedBlackGaussSeidel) {
             for (int colour = 0; colour < 2; ++colour)
                 forInterior(d, 1, [&](int i, int j, int k, std::ptrdiff_t c) {
@@ -179,8 +220,7 @@ void projectReference(SmokeState& s, const SmokeSettings& st, float emitFactor) 
         const float sum = referenceNeighbours(s, s.pressure, c, count);
         if (count > 0) after = std::max(after, std::fabs(sum + s.rhs[m] - s.pressure[m] * static_cast<float>(count)) / h2);
     });
-    s.stats.residual = after;
-    s.stats.pressureIterations = iterations;
+    recordProjection(s.stats, before, after, iterations, st.pressureAbsoluteTolerance);
 
     const std::vector<float>& p = s.pressure;
     forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) {
@@ -220,12 +260,14 @@ void substepReference(SmokeState& s, const SmokeSettings& st, float dt) {
     const float decayD = densityDecay(s, st, dt);
     const float decayT = static_cast<float>(std::exp(-st.temperatureDissipation * dt));
     const float decayV = static_cast<float>(std::exp(-st.velocityDissipation * dt));
-    advectReference(s, st, dt, decayD, decayT, decayV);
+    transportReference(s, dt, decayD, decayT);
+    advectVelocityReference(s, dt, decayV);
     setBorderFaces(s);  // the curl reads the border faces: give them this step's values
     forcesReference(s, st, dt);
     setBorderFaces(s);
     patchDynamicFaces(s);
-    projectReference(s, st, s.age < st.emitTime ? 1.f : 0.f);
+    s.projectedSource = s.age < st.emitTime ? 1.f : 0.f;
+    projectReference(s, st, s.projectedSource);
     projectBorderFaces(s);
     patchDynamicFaces(s);
 }

@@ -2,8 +2,57 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <queue>
+#include <utility>
 
 namespace obscura::smoke {
+namespace {
+
+// The emitter's cells: grown from the seed cell through faces between fluid cells, nearest to the
+// emitter centre first (ties: lower index), until there are as many as a free sphere of
+// emitterRadius holds (4/3 pi r^3 / h^3, rounded) or the next one is further than three radii.
+// In the open that is the sphere; against a wall, a floor or a ceiling it is the same volume
+// squeezed to the reachable side, so the gas never starts behind a wall and the amount does not
+// depend on where the canister lies (only a space smaller than the sphere gets fewer cells, each
+// taking a larger share of the same total).
+void chooseEmitterCells(SmokeState& s, const SmokeSettings& st) {
+    const GridInfo& g = s.grid;
+    s.emitterCentre = s.centre + Vec3{0, st.emitterLift, 0};
+    const double h = g.cellSize, r = std::max(0.0, st.emitterRadius);
+    const double want = std::round(4.0 / 3.0 * 3.14159265358979323846 * r * r * r / (h * h * h));
+    const std::size_t target = static_cast<std::size_t>(std::clamp(want, 1.0, 1e6));
+    const double reach2 = std::pow(std::max(3.0 * r, 1.5 * h), 2);
+    auto dist2 = [&](std::size_t c) {
+        const int i = static_cast<int>(c % static_cast<std::size_t>(g.nx));
+        const int j = static_cast<int>((c / static_cast<std::size_t>(g.nx)) % static_cast<std::size_t>(g.ny));
+        const int k = static_cast<int>(c / (static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.ny)));
+        const Vec3 off = g.cellCentre(i, j, k) - s.emitterCentre;
+        return dot(off, off);
+    };
+    using Entry = std::pair<double, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    std::vector<std::uint8_t> queued(g.cells(), 0);
+    s.emitterList.clear();
+    open.push({dist2(s.startCell), s.startCell});
+    queued[s.startCell] = 1;
+    const std::ptrdiff_t off[6] = {-1, 1, -s.dims.sy, s.dims.sy, -s.dims.sz, s.dims.sz};
+    while (!open.empty() && s.emitterList.size() < target) {
+        const auto [d2, c] = open.top();
+        open.pop();
+        if (d2 > reach2 && !s.emitterList.empty()) break;
+        s.emitterList.push_back(c);
+        for (std::ptrdiff_t o : off) {
+            const std::size_t m = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + o);
+            if (queued[m] || s.staticClass[m] != kFluid) continue;
+            queued[m] = 1;
+            open.push({dist2(m), m});
+        }
+    }
+    s.emitterCells = s.emitterList.size();
+}
+
+}  // namespace
 
 void initialiseState(SmokeState& s, const SmokeSettings& st) {
     const GridInfo& g = s.grid;
@@ -45,49 +94,35 @@ void initialiseState(SmokeState& s, const SmokeSettings& st) {
         s.fluidCells += s.staticClass[c] == kFluid;
     }
 
-    // Emitter cells: fluid cells whose centre is within the sphere (at least the centre's cell).
-    s.emitterCentre = s.centre + Vec3{0, st.emitterLift, 0};
-    s.source.assign(n, 0.f);
-    s.emitterCells = 0;
-    for (int k = 1; k < g.nz - 1; ++k)
-        for (int j = 1; j < g.ny - 1; ++j)
-            for (int i = 1; i < g.nx - 1; ++i) {
-                const std::size_t c = g.index(i, j, k);
-                if (s.staticClass[c] != kFluid) continue;
-                if (length(g.cellCentre(i, j, k) - s.emitterCentre) <= st.emitterRadius) {
-                    s.source[c] = 1.f;
-                    ++s.emitterCells;
-                }
-            }
-    if (s.emitterCells == 0) {
-        s.source[start] = 1.f;
-        s.emitterCells = 1;
-    }
+    chooseEmitterCells(s, st);
     // The expansion (1/s) per cell; a closed region absorbs it uniformly (sum of sources = 0).
-    const double q = st.emitExpansion;
-    const double sink = s.regionOpen ? 0.0 : q * static_cast<double>(s.emitterCells) / static_cast<double>(s.fluidCells);
-    for (std::size_t c = 0; c < n; ++c) {
-        if (s.staticClass[c] != kFluid) continue;
-        s.source[c] = static_cast<float>((s.source[c] != 0.f ? q : 0.0) - sink);
-    }
+    s.source.assign(n, 0.f);
+    const double h3 = g.cellSize * g.cellSize * g.cellSize;
+    s.emitterRate = static_cast<float>(st.emitGasRate / (static_cast<double>(s.emitterCells) * h3));
+    const double sink = s.regionOpen ? 0.0 : st.emitGasRate / (static_cast<double>(s.fluidCells) * h3);
+    for (std::size_t c = 0; c < n; ++c)
+        if (s.staticClass[c] == kFluid) s.source[c] = static_cast<float>(-sink);
+    for (std::size_t c : s.emitterList) s.source[c] = static_cast<float>(static_cast<double>(s.emitterRate) - sink);
 
-    for (auto* f : {&s.density, &s.temperature, &s.u, &s.v, &s.w, &s.pressure, &s.rhs, &s.pressureTmp, &s.diagInv})
+    for (auto* f : {&s.density, &s.temperature, &s.u, &s.v, &s.w, &s.pressure, &s.rhs, &s.pressureTmp, &s.diagInv, &s.outflow})
         f->assign(n, 0.f);
-    for (auto& f : s.hat) f.assign(n, 0.f);
+    for (auto& f : s.velHat) f.assign(n, 0.f);
     for (auto& f : s.next) f.assign(n, 0.f);
+    for (auto& field : s.flux)
+        for (auto& f : field) f.assign(n, 0.f);
     for (auto& f : s.omega) f.assign(n, 0.f);
     for (auto& m : s.faceMask) m.assign(n, 0);
     s.planeA.assign(g.nz, 0.f);
     s.planeB.assign(g.nz, 0.f);
-    s.planeSum.assign(g.nz, 0.0);
-    s.planeSumAfter.assign(g.nz, 0.0);
     s.rowScratch.assign(SmokeState::kScratchRows * static_cast<std::size_t>(g.nx) * g.nz, 0.f);
     for (int colour = 0; colour < 2; ++colour)
         for (auto* f : {&s.rbPressure[colour], &s.rbRhs[colour], &s.rbDiagInv[colour]})
             f->assign(static_cast<std::size_t>(s.rbWidth()) * g.ny * g.nz, 0.f);
     s.cellClass = s.staticClass;
     s.dynamicCells.clear();
+    s.mg.levels.clear();
     rebuildDerived(s, 0, g.nz - 1);
+    initialiseMultigrid(s);
 }
 
 void rebuildDerived(SmokeState& s, int k0, int k1) {
@@ -123,6 +158,7 @@ void rebuildDerived(SmokeState& s, int k0, int k1) {
                 }
                 s.diagInv[c] = inv;
             }
+    updateMultigrid(s, m0, m1);
 }
 
 float densityDecay(const SmokeState& s, const SmokeSettings& st, float dt) {
@@ -134,90 +170,54 @@ float densityDecay(const SmokeState& s, const SmokeSettings& st, float dt) {
     return static_cast<float>(std::exp(-rate * dt));
 }
 
-double planeDensity(const std::vector<float>& density, const kernels::Dims& d, int k) {
-    double sum = 0;
-    for (int j = 1; j < d.ny - 1; ++j) {
-        const float* row = density.data() + d.sy * j + d.sz * k;
-        for (int i = 1; i < d.nx - 1; ++i) sum += row[i];
-    }
-    return sum;
+void recordProjection(SmokeStats& st, float before, float after, int iterations, double floor) {
+    st.divergenceBefore = before;
+    st.residual = after;
+    st.pressureIterations = iterations;
+    st.pressureIterationsTotal += iterations;
+    if (before > 0.f && after > floor) st.worstRelativeResidual = std::max(st.worstRelativeResidual, static_cast<double>(after) / before);
 }
 
-double borderOutflow(const SmokeState& s, float dt) {
-    const GridInfo& g = s.grid;
+float cellOutflowRate(const SmokeState& s, std::size_t c) {
+    if (s.cellClass[c] != kFluid) return 0.f;
+    const std::size_t sy = static_cast<std::size_t>(s.dims.sy), sz = static_cast<std::size_t>(s.dims.sz);
+    const auto& m = s.faceMask;
+    return kernels::outflowRate(s.u[c], s.u[c + 1], s.v[c], s.v[c + sy], s.w[c], s.w[c + sz], m[0][c] != 0, m[0][c + 1] != 0,
+                                m[1][c] != 0, m[1][c + sy] != 0, m[2][c] != 0, m[2][c + sz] != 0,
+                                1.f / static_cast<float>(s.grid.cellSize));
+}
+
+float maxOutflowRateReference(const SmokeState& s) {
     const auto& d = s.dims;
-    const float perMetre = dt / static_cast<float>(g.cellSize);
-    // Fraction of the interior cell leaving through the face (upwind, at most all of it).
-    auto out = [&](float outwardSpeed, std::size_t interior) {
-        const float f = kernels::clampf(outwardSpeed * perMetre, 0.f, 1.f);
-        return static_cast<double>(f * s.density[interior]);
-    };
-    double sum = 0;
-    const std::size_t sy = static_cast<std::size_t>(d.sy), sz = static_cast<std::size_t>(d.sz);
-    for (int k = 1; k < g.nz - 1; ++k)
-        for (int j = 1; j < g.ny - 1; ++j) {
-            const std::size_t lo = g.index(1, j, k), hi = g.index(g.nx - 1, j, k);
-            if (s.cellClass[lo - 1] == kOpen) sum += out(-s.u[lo], lo);
-            if (s.cellClass[hi] == kOpen) sum += out(s.u[hi], hi - 1);
-        }
-    for (int k = 1; k < g.nz - 1; ++k)
-        for (int i = 1; i < g.nx - 1; ++i) {
-            const std::size_t lo = g.index(i, 1, k), hi = g.index(i, g.ny - 1, k);
-            if (s.cellClass[lo - sy] == kOpen) sum += out(-s.v[lo], lo);
-            if (s.cellClass[hi] == kOpen) sum += out(s.v[hi], hi - sy);
-        }
-    for (int j = 1; j < g.ny - 1; ++j)
-        for (int i = 1; i < g.nx - 1; ++i) {
-            const std::size_t lo = g.index(i, j, 1), hi = g.index(i, j, g.nz - 1);
-            if (s.cellClass[lo - sz] == kOpen) sum += out(-s.w[lo], lo);
-            if (s.cellClass[hi] == kOpen) sum += out(s.w[hi], hi - sz);
-        }
-    return sum;
-}
-
-float massScale(const SmokeSettings& st, double before, double outflow, double after, float decay) {
-    if (!st.conserveMass || !(after > 1e-9)) return 1.f;
-    const double target = std::max(0.0, before - outflow) * decay;
-    // Clamped: a bounded correction per step even if something odd happened upstream.
-    return static_cast<float>(std::clamp(target / after, 0.5, 2.0));
+    float worst = 0.f;
+    for (int k = 1; k < d.nz - 1; ++k)
+        for (int j = 1; j < d.ny - 1; ++j)
+            for (int i = 1; i < d.nx - 1; ++i) worst = std::max(worst, cellOutflowRate(s, static_cast<std::size_t>(i + d.sy * j + d.sz * k)));
+    return worst;
 }
 
 void applyEmitter(SmokeState& s, const SmokeSettings& st, float dt) {
     if (s.age >= st.emitTime) return;
-    const GridInfo& g = s.grid;
-    const float add = static_cast<float>(st.emitDensity) * dt;
-    const float temp = static_cast<float>(st.emitTemperature);
+    // The gas brings its smoke and heat: per cell, rate x dt of the cell's volume is new gas.
+    const float gas = s.emitterRate * dt;
+    const float addDensity = static_cast<float>(st.emitSmokeDensity) * gas;
+    const float addHeat = static_cast<float>(st.emitTemperature) * gas;
     const float ev[3] = {static_cast<float>(st.emitVelocity.x), static_cast<float>(st.emitVelocity.y),
                          static_cast<float>(st.emitVelocity.z)};
     const bool jet = ev[0] != 0.f || ev[1] != 0.f || ev[2] != 0.f;
-    constexpr float kMaxDensity = 100.f;  // guard against absurd emit rates (1 is already thick)
-    // The emitter's cells: fluid cells with a positive source, or the centre's cell (see above).
-    // Scan only the sphere's bounding box.
-    const Vec3 lo = g.toCellCoords(s.emitterCentre - Vec3{st.emitterRadius, st.emitterRadius, st.emitterRadius});
-    const Vec3 hi = g.toCellCoords(s.emitterCentre + Vec3{st.emitterRadius, st.emitterRadius, st.emitterRadius});
-    auto emitInto = [&](std::size_t c) {
-        if (s.cellClass[c] != kFluid) return;
-        s.density[c] = std::min(s.density[c] + add, kMaxDensity);
-        s.temperature[c] = std::max(s.temperature[c], temp);
-        if (jet) {
-            for (int a = 0; a < 3; ++a) {
-                std::vector<float>& f = a == 0 ? s.u : a == 1 ? s.v : s.w;
-                const std::size_t stride = a == 0 ? 1 : a == 1 ? static_cast<std::size_t>(s.dims.sy)
-                                                               : static_cast<std::size_t>(s.dims.sz);
-                if (s.faceMask[a][c]) f[c] = ev[a];
-                if (s.faceMask[a][c + stride]) f[c + stride] = ev[a];
-            }
+    constexpr float kMaxValue = 100.f;  // guard against absurd emit rates (1 is already thick)
+    const std::size_t strides[3] = {1, static_cast<std::size_t>(s.dims.sy), static_cast<std::size_t>(s.dims.sz)};
+    std::vector<float>* vel[3] = {&s.u, &s.v, &s.w};
+    for (std::size_t c : s.emitterList) {
+        if (s.cellClass[c] != kFluid) continue;  // a moving obstacle covers it this step
+        s.density[c] = std::min(s.density[c] + addDensity, kMaxValue);
+        s.temperature[c] = std::min(s.temperature[c] + addHeat, kMaxValue);
+        if (!jet) continue;
+        for (int a = 0; a < 3; ++a) {
+            if (s.faceMask[a][c]) (*vel[a])[c] = ev[a];
+            if (s.faceMask[a][c + strides[a]]) (*vel[a])[c + strides[a]] = ev[a];
         }
-    };
-    bool any = false;
-    for (int k = std::max(1, static_cast<int>(std::floor(lo.z))); k <= std::min(g.nz - 2, static_cast<int>(std::ceil(hi.z))); ++k)
-        for (int j = std::max(1, static_cast<int>(std::floor(lo.y))); j <= std::min(g.ny - 2, static_cast<int>(std::ceil(hi.y))); ++j)
-            for (int i = std::max(1, static_cast<int>(std::floor(lo.x))); i <= std::min(g.nx - 2, static_cast<int>(std::ceil(hi.x))); ++i)
-                if (length(g.cellCentre(i, j, k) - s.emitterCentre) <= st.emitterRadius) {
-                    emitInto(g.index(i, j, k));
-                    any = true;
-                }
-    if (!any) emitInto(s.startCell);
+    }
 }
 
 void setBorderFaces(SmokeState& s) {

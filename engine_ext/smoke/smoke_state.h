@@ -10,6 +10,7 @@
 #include "core/vec3.h"
 #include "smoke/smoke_grid.h"
 #include "smoke/smoke_kernels.h"
+#include "smoke/smoke_multigrid.h"
 #include "smoke/smoke_settings.h"
 
 namespace obscura::smoke {
@@ -19,10 +20,13 @@ class ThreadPool;
 // What the last step did (the last substep's figures where it was split).
 struct SmokeStats {
     int substeps = 0;
-    int pressureIterations = 0;
-    double divergenceBefore = 0;  // max |div u| over fluid cells before the projection (1/s)
+    int pressureIterations = 0;   // of the last substep (MultigridCG: CG iterations taken)
+    int pressureIterationsTotal = 0;  // summed over the step's substeps
+    double divergenceBefore = 0;  // max |div u - source| over fluid cells before the projection (1/s)
     double residual = 0;          // max |div u - source| left after it (1/s)
-    double maxSpeed = 0;          // m/s, max |face velocity| after the step
+    double worstRelativeResidual = 0;  // max over the step's substeps of residual / divergenceBefore
+                                       // (substeps whose residual is under the absolute floor: 0)
+    double maxSpeed = 0;          // m/s at the step's start: the largest sum of a cell's outgoing face speeds
     double milliseconds = 0;      // wall time of the whole step() call
     // Wall time per phase of the optimised path, summed over the step's substeps (ms).
     double msAdvect = 0, msForces = 0, msPressure = 0, msProject = 0;
@@ -47,23 +51,29 @@ struct SmokeState {
 
     // Fields (see smoke_kernels.h for the staggering).
     std::vector<float> density, temperature, u, v, w, pressure;
-    // Scratch.
-    std::vector<float> hat[5], next[5], omega[4], rhs, pressureTmp;
+    // Scratch. Advection: velHat = MacCormack's forward step of u, v, w; next = the new fields;
+    // flux[f][a] = scalar f's (0 density, 1 temperature) flux through each cell's lower face on
+    // axis a; outflow = each fluid cell's outflow rate (kernels::outflowRate).
+    std::vector<float> velHat[3], next[5], flux[2][3], outflow;
+    std::vector<float> omega[4], rhs, pressureTmp;
     std::vector<float> planeA, planeB;  // per z-plane reduction partials (fixed order)
-    std::vector<double> planeSum, planeSumAfter;  // per z-plane density sums (mass renormalisation)
     static constexpr std::size_t kScratchRows = 3;  // advection: a row's trace (x, y, z)
     std::vector<float> rowScratch;                 // kScratchRows x rows per z-plane, so step() never allocates
     // Red-black Gauss-Seidel works on the two colours stored apart (row r = j + ny k holds its
     // cells of one colour at (i >> 1) in rbWidth() slots), so each sweep is contiguous.
     std::vector<float> rbPressure[2], rbRhs[2], rbDiagInv[2];
     int rbWidth() const { return (grid.nx + 1) / 2; }
+    Multigrid mg;  // MultigridCG's levels and vectors
 
     Vec3 centre;           // detonation point
     std::size_t startCell = 0;  // the free cell nearest the centre: the flood fill's and emitter's seed
     Vec3 emitterCentre;
     bool regionOpen = false;  // the centre's fluid region reaches an open border cell
     std::size_t fluidCells = 0, emitterCells = 0;
+    std::vector<std::size_t> emitterList;  // the emitter's cells (see initialiseState), nearest first
+    float emitterRate = 0;  // volume source per emitter cell (1/s): emitGasRate / (cells x h^3)
     double age = 0;
+    float projectedSource = 0;  // the emitter's factor the last projection used (1 emitting, 0 not)
     SmokeStats stats;
 
     float* field(int n) {  // 0 density, 1 temperature, 2 u, 3 v, 4 w
@@ -87,12 +97,18 @@ void substepReference(SmokeState& s, const SmokeSettings& settings, float dt);
 void applyEmitter(SmokeState& s, const SmokeSettings& settings, float dt);
 void patchDynamicFaces(SmokeState& s);
 void setBorderFaces(SmokeState& s);
+void projectBorderFaces(SmokeState& s);
 float densityDecay(const SmokeState& s, const SmokeSettings& settings, float dt);
-// Density (as a sum over cells) leaving through open border faces in dt, upwind.
-double borderOutflow(const SmokeState& s, float dt);
-// The factor that restores the advected density's total to (before - outflow) * decay.
-float massScale(const SmokeSettings& settings, double before, double outflow, double after, float decay);
-// Sum of density over plane k's interior cells, in row order (what both paths reduce with).
-double planeDensity(const std::vector<float>& density, const kernels::Dims& d, int k);
+// A substep's projection figures into the step's stats (max divergence before / after, 1/s;
+// what is left under `floor` 1/s counts as divergence-free: SmokeSettings::pressureAbsoluteTolerance).
+void recordProjection(SmokeStats& stats, float before, float after, int iterations, double floor);
+// Outflow rate (1/s, kernels::outflowRate) of fluid cell c, 0 for any other cell.
+float cellOutflowRate(const SmokeState& s, std::size_t c);
+// Max over cells of cellOutflowRate (what the substep count is chosen from), fast and plain.
+float maxOutflowRate(SmokeState& s, ThreadPool& pool);
+float maxOutflowRateReference(const SmokeState& s);
+// The MultigridCG solve of s.rhs into s.pressure (warm start), both paths.
+PressureSolveStats solvePressureFast(SmokeState& s, const SmokeSettings& settings, ThreadPool& pool);
+PressureSolveStats solvePressureReference(SmokeState& s, const SmokeSettings& settings);
 
 }  // namespace obscura::smoke

@@ -103,6 +103,11 @@ SmokeVolume SmokeVolume::create(const map::Level& level, const std::vector<Trian
     impl->settings = st;
     impl->pool = pool ? std::move(pool) : std::make_shared<ThreadPool>(st.threads);
     impl->transmittance.assign(s.grid.cells(), 1.f);
+    // Prime the flow: a substep of length 0 projects the still air with the emitter's volume
+    // source, so the first step's gas already leaves its cells at the expansion's speed (without
+    // it the first step's gas stays put and the canister's cells start at 1.4x the gas density).
+    substepFast(s, impl->settings, *impl->pool, 0.f);
+    s.stats = {};
     return SmokeVolume(std::move(impl));
 }
 
@@ -112,21 +117,22 @@ void SmokeVolume::advance(double dt, bool reference) {
     SmokeState& s = m.state;
     if (!(dt > 0) || !std::isfinite(dt)) return;
     dt = std::min(dt, m.settings.maxStep);
-    // Substeps from the fastest face (max is order independent: any thread count agrees).
-    float vmax = 0.f;
-    for (const auto* f : {&s.u, &s.v, &s.w})
-        for (float x : *f) vmax = std::max(vmax, std::fabs(x));
-    const double cells = vmax * dt / (m.settings.cellSize * std::max(1e-3, m.settings.maxCfl));
-    const int substeps = std::clamp(static_cast<int>(std::ceil(cells)), 1, m.settings.maxSubsteps);
+    // Substeps from the largest outflow courant number (max is order independent: any thread
+    // count agrees, and both paths compute each cell's rate with the same kernel).
+    const float rate = reference ? maxOutflowRateReference(s) : maxOutflowRate(s, *m.pool);
+    const double cells = rate * dt / std::max(1e-3, m.settings.maxCfl);
+    const int substeps = static_cast<int>(std::clamp(std::ceil(cells), 1.0, static_cast<double>(m.settings.maxSubsteps)));
     const float sub = static_cast<float>(dt / substeps);
     s.stats.msAdvect = s.stats.msForces = s.stats.msPressure = s.stats.msProject = 0;
+    s.stats.pressureIterationsTotal = 0;
+    s.stats.worstRelativeResidual = 0;
     for (int n = 0; n < substeps; ++n) {
         if (reference) substepReference(s, m.settings, sub);
         else substepFast(s, m.settings, *m.pool, sub);
         s.age += sub;
     }
     s.stats.substeps = substeps;
-    s.stats.maxSpeed = vmax;
+    s.stats.maxSpeed = rate * m.settings.cellSize;
     s.stats.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -213,23 +219,41 @@ void SmokeVolume::carve(const Vec3& origin, const Vec3& direction, double length
     const float wake[3] = {static_cast<float>(dir.x * wakeSpeed), static_cast<float>(dir.y * wakeSpeed),
                            static_cast<float>(dir.z * wakeSpeed)};
     const float vmax = static_cast<float>(impl_->settings.maxSpeed);
+    // The tunnel's profile, the fraction of the smoke a point keeps: none within radius / 2, a
+    // smoothstep out to the radius. Each cell keeps the profile's average over its volume (4^3
+    // samples), not its value at the centre, so the tunnel is round at any offset and angle
+    // instead of a staircase of whole cells, and the trilinear ray-march shows a round hole.
+    auto keep = [&](const Vec3& p) {
+        const double t = std::clamp(dot(p - origin, dir), 0.0, length);
+        const double x = obscura::length(p - (origin + dir * t)) / radius;
+        const double e = std::clamp(2.0 * x - 1.0, 0.0, 1.0);
+        return e * e * (3.0 - 2.0 * e);
+    };
+    const double h = g.cellSize, halfDiagonal = 0.5 * std::sqrt(3.0) * h;
+    std::vector<float>* vel[3] = {&s.u, &s.v, &s.w};
     for (int k = k0; k <= k1; ++k)
         for (int j = j0; j <= j1; ++j)
             for (int i = i0; i <= i1; ++i) {
+                const std::size_t c = g.index(i, j, k);
+                if (s.cellClass[c] != kFluid) continue;
                 const Vec3 p = g.cellCentre(i, j, k);
                 const double t = std::clamp(dot(p - origin, dir), 0.0, length);
                 const double dist = obscura::length(p - (origin + dir * t));
-                if (dist >= radius) continue;
-                const std::size_t c = g.index(i, j, k);
-                const float x = static_cast<float>(dist / radius);
-                // Clear core (inner half of the radius), smoothstep edge out to the radius.
-                const float e = kernels::clampf(2.f * x - 1.f, 0.f, 1.f);
-                s.density[c] *= e * e * (3.f - 2.f * e);
-                const float along = 1.f - x;
-                std::vector<float>* f[3] = {&s.u, &s.v, &s.w};
+                if (dist >= radius + halfDiagonal) continue;  // no part of the cell is in the tunnel
+                double kept = 0.0;
+                if (dist > 0.5 * radius - halfDiagonal) {
+                    for (int sz = 0; sz < 4; ++sz)
+                        for (int sy = 0; sy < 4; ++sy)
+                            for (int sx = 0; sx < 4; ++sx)
+                                kept += keep(p + Vec3{(sx - 1.5) * 0.25 * h, (sy - 1.5) * 0.25 * h, (sz - 1.5) * 0.25 * h});
+                    kept /= 64.0;
+                }
+                s.density[c] *= static_cast<float>(kept);
+                // The wake: the air the bullet drags along, as strong as the tunnel is clear.
+                const float along = static_cast<float>(1.0 - kept);
                 for (int a = 0; a < 3; ++a)
                     if (s.faceMask[a][c])
-                        (*f[a])[c] = kernels::clampf((*f[a])[c] + wake[a] * along, -vmax, vmax);
+                        (*vel[a])[c] = kernels::clampf((*vel[a])[c] + wake[a] * along, -vmax, vmax);
             }
 }
 

@@ -68,8 +68,9 @@ public:
     void setMovingObstacles(const std::vector<MovingObstacle>& obstacles);
 
     // A bullet: removes smoke within `radius` of the segment origin + t * direction, t in
-    // [0, length] (all of it within radius / 2, a smoothstep edge out to the radius) and gives the air a
-    // wake along the ray (wakeSpeed m/s on the axis) so the tunnel closes by the flow.
+    // [0, length] (all of it within radius / 2, a smoothstep edge out to the radius; each cell keeps
+    // that profile's average over its volume, so the tunnel is round below the cell size) and gives
+    // the air a wake along the ray (wakeSpeed m/s on the axis) so the tunnel closes by the flow.
     void carve(const Vec3& origin, const Vec3& direction, double length, double radius, double wakeSpeed = 3.0);
 
     double age() const;        // seconds simulated
@@ -90,7 +91,7 @@ public:
     bool solidAt(int i, int j, int k) const;       // the solver treats the cell as solid (any cause)
     bool voxelSolidAt(int i, int j, int k) const;  // the voxeliser marked it (brush / mesh / out of level)
     double totalDensity() const;   // sum of density x cell volume (m^3 density units), fixed order
-    double maxDivergence() const;  // max |div u - source| over fluid cells now (1/s)
+    double maxDivergence() const;  // max |div u - source| over fluid cells now (1/s; the source of the last projection)
 
     // Transmittance toward a light: per cell exp(-shadowSigma * integral of density from the cell
     // toward the light), swept slice by slice along the light's dominant axis (bilinear in the
@@ -98,11 +99,20 @@ public:
     void computeTransmittance(const Vec3& towardLight);
     const std::vector<float>& transmittance() const;  // grid().cells() values, x fastest; 1 until computed
 
-    // Packed for a 3D texture of grid().nx x ny x nz (x fastest, then y, then z):
+    // Packed for a 3D texture of grid().nx x ny x nz (x fastest, then y, then z). The density
+    // exported is the fluid cells' own; a built cell (wall, floor, ceiling, mesh) next to free
+    // space gets the smallest density among those free neighbours, and a built cell behind that
+    // one the smallest of its first-layer neighbours', so a trilinear sample between the last fluid
+    // cell and a surface (wherever it lies in its cell) sees the smoke's density, not a fade to 0:
+    // the smoke reaches the surface the renderer's depth test stops it at. (Smallest, so a
+    // one-cell wall with smoke on one side only exports 0 and shows nothing on its clean side.)
+    // Every other cell the smoke cannot enter exports 0.
     // RG8: R = density / exportDensityScale (clamped to 1), G = transmittance, each 0..255.
     void exportRG8(std::vector<std::uint8_t>& out) const;
     // RG32F: (density, transmittance) pairs, unscaled.
     void exportRGFloat(std::vector<float>& out) const;
+    // R32F: the density alone, unscaled (HDR: no clamp), one float per cell.
+    void exportDensityFloat(std::vector<float>& out) const;
 
     // True when every field is finite, density and temperature are >= 0 and no non-fluid cell
     // holds density; otherwise false and `problem` says what and where.

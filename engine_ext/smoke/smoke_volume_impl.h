@@ -15,6 +15,7 @@ struct SmokeVolume::Impl {
     std::shared_ptr<ThreadPool> pool;
     std::vector<float> transmittance;  // 1 until computeTransmittance()
     std::vector<float> opticalDepth;   // scratch of computeTransmittance()
+    std::vector<float> exportScratch;  // the exported density (exportRG8 / exportRGFloat)
 };
 
 }  // namespace obscura::smoke

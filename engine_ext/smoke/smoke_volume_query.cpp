@@ -67,7 +67,7 @@ double SmokeVolume::maxDivergence() const {
     const SmokeState& s = impl_->state;
     const auto& d = s.dims;
     const float invH = 1.f / static_cast<float>(s.grid.cellSize);
-    const float emit = s.age < impl_->settings.emitTime ? 1.f : 0.f;
+    const float emit = s.projectedSource;  // the source the last projection solved for
     double worst = 0;
     for (int k = 1; k < d.nz - 1; ++k)
         for (int j = 1; j < d.ny - 1; ++j)
@@ -163,27 +163,100 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
     });
 }
 
+namespace {
+
+// The density a texture gets (see SmokeVolume::exportRG8), for every cell into `out`: a fluid
+// cell's own; a built cell (wall, floor, ceiling, mesh) next to free space the smallest density
+// among those free neighbours; a built cell one step further in the smallest among its
+// neighbours of the layer before; six layers. A surface can lie anywhere in its first built cell,
+// so a trilinear sample between the last fluid cell and the surface blends up to two built cells
+// on each axis: six steps in a corner of three surfaces. Every other cell exports 0. The layers
+// grow from a frontier list, so the cost is the wall skin's, not six sweeps of the grid.
+void exportedDensity(const SmokeState& s, std::vector<float>& out) {
+    const GridInfo& g = s.grid;
+    const std::size_t n = g.cells();
+    out.assign(n, 0.f);
+    std::vector<std::uint8_t> layer(n, 0);  // l: the l-th layer of built cells
+    const std::ptrdiff_t off[6] = {-1, 1, -s.dims.sy, s.dims.sy, -s.dims.sz, s.dims.sz};
+    auto inside = [&](std::size_t c, int o) {  // the face neighbour o of c is in the grid
+        const int i = static_cast<int>(c % static_cast<std::size_t>(g.nx));
+        const int j = static_cast<int>((c / static_cast<std::size_t>(g.nx)) % static_cast<std::size_t>(g.ny));
+        const int k = static_cast<int>(c / (static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.ny)));
+        const int at[3] = {i, j, k}, size[3] = {g.nx, g.ny, g.nz};
+        const int axis = o / 2, step = (o & 1) ? 1 : -1;
+        return at[axis] + step >= 0 && at[axis] + step < size[axis];
+    };
+    // Layer l's value at built cell c: the least among neighbours that are free space (l = 1) or
+    // of layer l - 1; false if there are none.
+    auto least = [&](std::size_t c, int l, float& value) {
+        bool any = false;
+        for (int o = 0; o < 6; ++o) {
+            if (!inside(c, o)) continue;
+            const std::size_t m = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + off[o]);
+            if (l == 1 ? s.voxelSolid[m] != 0 : layer[m] != l - 1) continue;
+            const float v = l == 1 ? s.density[m] : out[m];
+            value = any ? std::min(value, v) : v;
+            any = true;
+        }
+        return any;
+    };
+    std::vector<std::size_t> frontier;
+    for (std::size_t c = 0; c < n; ++c) {
+        if (s.cellClass[c] == kFluid) out[c] = s.density[c];
+        float v;
+        if (s.voxelSolid[c] == kVoxelBuilt && least(c, 1, v)) {
+            out[c] = v;
+            layer[c] = 1;
+            frontier.push_back(c);
+        }
+    }
+    constexpr int kLayers = 6;
+    std::vector<std::size_t> next;
+    for (int l = 2; l <= kLayers && !frontier.empty(); ++l) {
+        next.clear();
+        for (std::size_t c : frontier)
+            for (int o = 0; o < 6; ++o) {
+                if (!inside(c, o)) continue;
+                const std::size_t m = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + off[o]);
+                if (s.voxelSolid[m] != kVoxelBuilt || layer[m] != 0) continue;
+                float v = 0.f;
+                least(m, l, v);  // true: c is one of its layer l - 1 neighbours
+                out[m] = v;
+                layer[m] = static_cast<std::uint8_t>(l);
+                next.push_back(m);
+            }
+        frontier.swap(next);
+    }
+}
+
+}  // namespace
+
 void SmokeVolume::exportRG8(std::vector<std::uint8_t>& out) const {
     const SmokeState& s = impl_->state;
     const std::size_t n = s.grid.cells();
+    std::vector<float>& density = impl_->exportScratch;
+    exportedDensity(s, density);
     out.resize(2 * n);
     const float scale = 255.f / static_cast<float>(std::max(1e-6, impl_->settings.exportDensityScale));
     const float* T = impl_->transmittance.data();
     for (std::size_t c = 0; c < n; ++c) {
-        out[2 * c] = static_cast<std::uint8_t>(kernels::clampf(s.density[c] * scale, 0.f, 255.f) + 0.5f);
+        out[2 * c] = static_cast<std::uint8_t>(kernels::clampf(density[c] * scale, 0.f, 255.f) + 0.5f);
         out[2 * c + 1] = static_cast<std::uint8_t>(kernels::clampf(T[c] * 255.f, 0.f, 255.f) + 0.5f);
     }
 }
 
 void SmokeVolume::exportRGFloat(std::vector<float>& out) const {
-    const SmokeState& s = impl_->state;
-    const std::size_t n = s.grid.cells();
+    const std::size_t n = impl_->state.grid.cells();
+    std::vector<float>& density = impl_->exportScratch;
+    exportedDensity(impl_->state, density);
     out.resize(2 * n);
     for (std::size_t c = 0; c < n; ++c) {
-        out[2 * c] = s.density[c];
+        out[2 * c] = density[c];
         out[2 * c + 1] = impl_->transmittance[c];
     }
 }
+
+void SmokeVolume::exportDensityFloat(std::vector<float>& out) const { exportedDensity(impl_->state, out); }
 
 bool SmokeVolume::validate(std::string* problem) const {
     const SmokeState& s = impl_->state;

@@ -5,6 +5,7 @@
 
 namespace obscura::smoke {
 namespace {
+
 void cpuRelax() {
 #if defined(__x86_64__) || defined(__i386__)
     __builtin_ia32_pause();  // eases the spin on the sibling hyper-thread and the memory bus
@@ -12,11 +13,47 @@ void cpuRelax() {
     std::this_thread::yield();
 #endif
 }
+
+// Chunks per thread: enough that a thread the OS did not schedule leaves work the others take
+// (with one chunk each, the caller would wait for it), few enough that taking one (a
+// compare-and-swap) stays negligible. Measured at 64^3 (README.md): 4 a thread is within noise
+// of 1 on an idle machine.
+constexpr int kChunksPerThread = 4;
+// Spinning before blocking: a solver step issues a few hundred jobs back to back, and waking a
+// blocked thread costs tens of microseconds; a worker polling this long catches the next job of
+// the same step. Short enough that on a busy machine the core goes back soon (README.md).
+constexpr std::int64_t kDefaultSpinNs = 30'000;
+
+constexpr std::uint64_t kIndexBits = 20, kIndexMask = (std::uint64_t{1} << kIndexBits) - 1;
+std::uint64_t pack(std::uint64_t generation, std::uint64_t chunks, std::uint64_t next) {
+    return (generation << (2 * kIndexBits)) | (chunks << kIndexBits) | next;
+}
+std::uint64_t generationOf(std::uint64_t job) { return job >> (2 * kIndexBits); }
+std::uint64_t chunksOf(std::uint64_t job) { return (job >> kIndexBits) & kIndexMask; }
+std::uint64_t nextOf(std::uint64_t job) { return job & kIndexMask; }
+
+using Clock = std::chrono::steady_clock;
+
+// Spins until done() or `ns` nanoseconds passed; true if done.
+template <class Done>
+bool spinFor(std::int64_t ns, const Done& done) {
+    if (done()) return true;
+    const auto until = Clock::now() + std::chrono::nanoseconds(ns);
+    for (;;) {
+        for (int i = 0; i < 16; ++i) {
+            cpuRelax();
+            if (done()) return true;
+        }
+        if (Clock::now() >= until) return done();
+    }
+}
+
 }  // namespace
 
-ThreadPool::ThreadPool(int threads) {
+ThreadPool::ThreadPool(int threads) : spinNs_(kDefaultSpinNs) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    for (int t = 1; t < threads; ++t) workers_.emplace_back([this, t] { workerLoop(t); });
+    threads = std::min(threads, 256);
+    for (int t = 1; t < threads; ++t) workers_.emplace_back([this] { workerLoop(); });
 }
 
 ThreadPool::~ThreadPool() {
@@ -28,12 +65,27 @@ ThreadPool::~ThreadPool() {
     for (auto& w : workers_) w.join();
 }
 
-void ThreadPool::runChunk(int index) {
-    const int n = threads();
-    const int base = count_ / n, extra = count_ % n;
-    const int begin = index * base + std::min(index, extra);
-    const int end = begin + base + (index < extra ? 1 : 0);
-    if (begin < end) (*job_)(begin, end);
+void ThreadPool::finishChunk() {
+    if (remaining_.fetch_sub(1) == 1 && callerSleeping_.load()) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        done_.notify_one();
+    }
+}
+
+void ThreadPool::runChunks(std::uint64_t generation) {
+    std::uint64_t job = job_.load();
+    for (;;) {
+        if (generationOf(job) != generation || nextOf(job) >= chunksOf(job)) return;
+        // Success means job `generation` still had this chunk untaken, so the caller is still
+        // inside parallelFor and fn_ / count_ are that job's (written before job_ was published).
+        if (!job_.compare_exchange_weak(job, job + 1)) continue;  // job reloaded
+        const std::int64_t chunks = static_cast<std::int64_t>(chunksOf(job)), index = static_cast<std::int64_t>(nextOf(job));
+        const std::int64_t count = count_.load(std::memory_order_relaxed);
+        const int begin = static_cast<int>(count * index / chunks), end = static_cast<int>(count * (index + 1) / chunks);
+        if (begin < end) (*fn_.load(std::memory_order_relaxed))(begin, end);
+        finishChunk();
+        job = job_.load();
+    }
 }
 
 void ThreadPool::parallelFor(int count, const std::function<void(int, int)>& fn) {
@@ -42,47 +94,40 @@ void ThreadPool::parallelFor(int count, const std::function<void(int, int)>& fn)
         fn(0, count);
         return;
     }
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        job_ = &fn;
-        count_ = count;
-        pending_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
-        generation_.fetch_add(1, std::memory_order_release);
+    const int chunks = std::min(count, threads() * kChunksPerThread);
+    fn_.store(&fn, std::memory_order_relaxed);
+    count_.store(count, std::memory_order_relaxed);
+    remaining_.store(chunks);
+    const std::uint64_t generation = (generationOf(job_.load()) + 1) & ((std::uint64_t{1} << 24) - 1);
+    job_.store(pack(generation, static_cast<std::uint64_t>(chunks), 0));
+    if (sleepingWorkers_.load() > 0) {
+        { std::lock_guard<std::mutex> lock(mutex_); }
+        wake_.notify_all();
     }
-    wake_.notify_all();
-    runChunk(0);
-    // Short spin first: most chunks finish within microseconds of each other.
-    const auto spinUntil = std::chrono::steady_clock::now() + std::chrono::microseconds(200);
-    while (pending_.load(std::memory_order_acquire) != 0 && std::chrono::steady_clock::now() < spinUntil) cpuRelax();
-    if (pending_.load(std::memory_order_acquire) != 0) {
+    runChunks(generation);
+    // Chunks other threads took are running (a worker that took one is scheduled); wait for them,
+    // spinning briefly, then blocked, which frees this core for a thread the OS has waiting.
+    if (!spinFor(spinNs_.load(std::memory_order_relaxed), [this] { return remaining_.load() == 0; })) {
         std::unique_lock<std::mutex> lock(mutex_);
-        done_.wait(lock, [this] { return pending_.load(std::memory_order_acquire) == 0; });
+        callerSleeping_ = true;
+        done_.wait(lock, [this] { return remaining_.load() == 0; });
+        callerSleeping_ = false;
     }
-    job_ = nullptr;
 }
 
-void ThreadPool::workerLoop(int index) {
-    unsigned seen = 0;
+void ThreadPool::workerLoop() {
+    std::uint64_t seen = generationOf(job_.load());
     for (;;) {
-        // Spin briefly before sleeping: a step issues ~50 jobs back to back, and waking a thread
-        // parked on the condition variable costs tens of microseconds each time (measured at 64^3:
-        // ~0.6 ms of a 7 ms step). 100 us of polling after a job is nothing next to that.
-        const auto spinUntil = std::chrono::steady_clock::now() + std::chrono::microseconds(100);
-        while (generation_.load(std::memory_order_acquire) == seen && !stop_.load(std::memory_order_relaxed) &&
-               std::chrono::steady_clock::now() < spinUntil) {
-            cpuRelax();
-        }
-        {
+        auto newJob = [&] { return stop_.load() || generationOf(job_.load()) != seen; };
+        if (!spinFor(spinNs_.load(std::memory_order_relaxed), newJob)) {
             std::unique_lock<std::mutex> lock(mutex_);
-            wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
-            if (stop_) return;
-            seen = generation_.load(std::memory_order_relaxed);
+            ++sleepingWorkers_;
+            wake_.wait(lock, newJob);
+            --sleepingWorkers_;
         }
-        runChunk(index);
-        if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-            std::lock_guard<std::mutex> lock(mutex_);
-            done_.notify_one();
-        }
+        if (stop_.load()) return;
+        seen = generationOf(job_.load());
+        runChunks(seen);
     }
 }
 

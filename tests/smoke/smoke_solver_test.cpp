@@ -46,26 +46,66 @@ double maxAbsDiff(const std::vector<float>& a, const std::vector<float>& b) {
 }  // namespace
 
 // The projection makes the flow divergence-free up to the solver's residual; on the MAC grid
-// the divergence measured afterwards IS that residual (same discrete operators), so enough
-// iterations drive it to float round-off.
-TEST(SmokeSolver, DivergenceAfterProjectionBelowTolerance) {
+// the divergence measured afterwards IS that residual (same discrete operators), so a tight
+// tolerance drives it to float round-off.
+TEST(SmokeSolver, ConvergedProjectionIsDivergenceFree) {
     SmokeSettings st = testlevels::small(24);
-    st.pressureIterations = 400;  // converged: the tolerance below is about the discretisation
+    st.pressureTolerance = 1e-6;
     SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, st);
     for (int i = 0; i < 30; ++i) vol.step(1.0 / 30);
     const double before = vol.stats().divergenceBefore, after = vol.maxDivergence();
-    std::cout << "max |div| before " << before << " 1/s, after " << after << " 1/s\n";
+    std::cout << "max |div| before " << before << " 1/s, after " << after << " 1/s (" << vol.stats().pressureIterations
+              << " MGPCG iterations)\n";
     EXPECT_GT(before, 0.1);
-    // 1e-3 1/s: a cell's volume changes by 0.1 % per second; float round-off is ~1e-5.
-    EXPECT_LT(after, 1e-3);
+    EXPECT_LT(after, 1e-5 * before + 1e-5);
     EXPECT_NEAR(vol.stats().residual, after, 1e-4) << "the reported residual is the divergence left";
+}
 
-    // The game's 20 warm-started iterations: stated tolerance 5 % of the pre-projection value
-    // once the warm start has a second to settle (measured ~1 %).
-    SmokeVolume game = SmokeVolume::create(room(), {}, {0, 0.1, 0}, testlevels::small(24));
-    for (int i = 0; i < 30; ++i) game.step(1.0 / 30);
-    std::cout << "20 iterations: before " << game.stats().divergenceBefore << " after " << game.maxDivergence() << "\n";
-    EXPECT_LT(game.maxDivergence(), 0.05 * game.stats().divergenceBefore);
+// A whole grenade's life (18 s at the game's 20 Hz) in two rooms joined by a doorway, with a
+// player walking through the door and back: after every step the divergence left is at most 1e-3
+// of the divergence before the projection (or under the absolute floor of 1e-5 1/s), measured
+// from the velocity itself. Both a closed pair of rooms (the singular Neumann problem) and the
+// same rooms cut by the grid's open border.
+TEST(SmokeSolver, ProjectionMeetsItsToleranceAllLife) {
+    const map::Level level = testlevels::doorwayRooms();
+    for (bool open : {false, true}) {
+        // A 9 m box around a grenade at x = -0.75 holds both rooms and their walls: closed; a 6 m
+        // box around one at x = -1.5 cuts the second room at x = 1.5: open.
+        SmokeSettings st = testlevels::small(open ? 24 : 36);
+        SmokeVolume vol = SmokeVolume::create(level, {}, {open ? -1.5 : -0.75, 0.05, 0.3}, st);
+        ASSERT_EQ(vol.state().regionOpen, open);
+        double worst = 0, sum = 0, floorSteps = 0;
+        int steps = 0, maxIterations = 0, iterations = 0;
+        while (!vol.finished()) {
+            MovingObstacle player;
+            player.shape = MovingObstacle::Shape::Box;
+            const double t = vol.age(), x = 2.5 * std::sin(0.5 * t);  // through the door and back
+            player.centre = {x, 0.9, 0.0};
+            player.halfExtents = {0.3, 0.9, 0.3};
+            player.velocity = {1.25 * std::cos(0.5 * t), 0, 0};
+            vol.setMovingObstacles({player});
+            vol.step(0.05);
+            const SmokeStats& s = vol.stats();
+            const double after = vol.maxDivergence();
+            const double relative = s.divergenceBefore > 0 ? after / s.divergenceBefore : 0.0;
+            if (after > 1e-5) {
+                worst = std::max(worst, relative);
+                sum += relative;
+            } else {
+                ++floorSteps;
+            }
+            ASSERT_TRUE(relative <= 1e-3 || after <= 1e-5)
+                << "t " << vol.age() << ": before " << s.divergenceBefore << " after " << after << " (" << s.pressureIterations << " iterations)";
+            EXPECT_LE(s.worstRelativeResidual, 1e-3) << "every substep, as the solver saw it";
+            ++steps;
+            iterations += s.pressureIterationsTotal;
+            maxIterations = std::max(maxIterations, s.pressureIterations);
+        }
+        std::cout << (open ? "open" : "closed") << " rooms, " << steps << " steps: relative divergence left mean "
+                  << sum / std::max(1.0, steps - floorSteps) << ", worst " << worst << " (" << floorSteps
+                  << " steps under 1e-5 1/s); MGPCG iterations per step " << static_cast<double>(iterations) / steps
+                  << ", most in one substep " << maxIterations << "\n";
+    }
 }
 
 TEST(SmokeSolver, SameResultForAnyThreadCount) {
@@ -119,7 +159,7 @@ TEST(SmokeSolver, SameResultForEitherVectorBuild) {
 TEST(SmokeSolver, MatchesScalarReference) {
     // An odd resolution too: the optimised red-black sweep stores the colours apart by row halves.
     for (int resolution : {24, 21}) {
-        for (PressureSolver solver : {PressureSolver::RedBlackGaussSeidel, PressureSolver::Jacobi}) {
+        for (PressureSolver solver : {PressureSolver::MultigridCG, PressureSolver::RedBlackGaussSeidel, PressureSolver::Jacobi}) {
             SmokeSettings st = testlevels::small(resolution, 2);
             st.pressureSolver = solver;
             SmokeVolume fast = SmokeVolume::create(room(), {}, {0, 0.1, 0}, st);
@@ -129,48 +169,48 @@ TEST(SmokeSolver, MatchesScalarReference) {
             const double dd = maxAbsDiff(fast.state().density, ref.state().density);
             const double du = std::max({maxAbsDiff(fast.state().u, ref.state().u), maxAbsDiff(fast.state().v, ref.state().v),
                                         maxAbsDiff(fast.state().w, ref.state().w)});
-            std::cout << resolution << "^3 " << (solver == PressureSolver::Jacobi ? "Jacobi" : "RBGS") << ": max |density diff| " << dd
+            const char* name = solver == PressureSolver::Jacobi ? "Jacobi" : solver == PressureSolver::MultigridCG ? "MGPCG" : "RBGS";
+            std::cout << resolution << "^3 " << name << ": max |density diff| " << dd
                       << ", max |velocity diff| " << du << "\n";
-            EXPECT_LE(dd, 1e-5 * 6.0);  // densities reach ~6
+            EXPECT_LE(dd, 1e-5 * 1.0);  // densities reach ~1
             EXPECT_LE(du, 1e-5 * 5.0);  // speeds reach a few m/s
             EXPECT_NEAR(fast.stats().residual, ref.stats().residual, 1e-6 + 1e-4 * ref.stats().residual);
         }
     }
 }
 
-// Closed room, no dissipation, no emitter after the first half second. MacCormack advection is
-// not conservative (measured here: +2 % in 3 s with the default plume, +25 % with a hotter one
-// piling up under the ceiling), so the solver renormalises the total after each advection
-// (SmokeSettings::conserveMass); what is left is float summation round-off (measured 3e-8).
-// Stated tolerance: 0.1 % over 3 s.
-TEST(SmokeSolver, MassConservedWithoutDissipation) {
-    for (bool conserve : {true, false}) {
-        SmokeSettings st = testlevels::small(24);
-        st.emitTime = 0.5;
-        st.densityDissipation = 0;
-        st.fadeTime = 0;
-        st.conserveMass = conserve;
-        SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, st);
-        while (vol.emitting()) vol.step(1.0 / 30);
-        const double m0 = vol.totalDensity();
-        for (int i = 0; i < 90; ++i) vol.step(1.0 / 30);
-        const double m1 = vol.totalDensity();
-        std::cout << (conserve ? "renormalised" : "raw MacCormack") << ": mass " << m0 << " -> " << m1 << " ("
-                  << 100.0 * (m1 - m0) / m0 << " %)\n";
-        EXPECT_GT(m0, 0.1);
-        if (conserve) {
-            EXPECT_NEAR(m1, m0, 1e-3 * m0);
-        }
+// Closed room, no modelled decay, the emitter done: the flux-form transport moves smoke only
+// across faces, what one cell loses its neighbour gains, so the total stays what it was up to
+// float rounding (measured: ~1e-7 over 3 s). Stated bound: 1 % per second; the test asks 1e-4
+// over 3 s, so it fails on any real leak or source.
+TEST(SmokeSolver, TransportConservesMass) {
+    SmokeSettings st = testlevels::small(24);
+    st.emitTime = 0.5;
+    st.densityDissipation = 0;
+    st.fadeTime = 0;
+    SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, st);
+    while (vol.emitting()) vol.step(1.0 / 30);
+    const double m0 = vol.totalDensity();
+    double worstStep = 0;
+    for (int i = 0; i < 90; ++i) {
+        const double before = vol.totalDensity();
+        vol.step(1.0 / 30);
+        worstStep = std::max(worstStep, std::fabs(vol.totalDensity() - before) / before);
     }
+    const double m1 = vol.totalDensity();
+    std::cout << "mass " << m0 << " -> " << m1 << " over 3 s (" << 100.0 * (m1 - m0) / m0 / 3.0 << " %/s; worst step "
+              << worstStep << ")\n";
+    EXPECT_GT(m0, 0.9 * st.emitSmokeDensity * st.emitGasRate * st.emitTime) << "the gas's smoke is in the room";
+    EXPECT_NEAR(m1, m0, 1e-4 * m0);
 }
 
 TEST(SmokeSolver, NeverNanOrInfWithExtremeInputs) {
     SmokeSettings st = testlevels::small(20);
-    st.emitDensity = 1e30;
+    st.emitSmokeDensity = 1e30;
     st.emitTemperature = 1e30;
     st.buoyancy = 1e10;
     st.vorticity = 1e6;
-    st.emitExpansion = 1e6;
+    st.emitGasRate = 1e6;
     st.emitVelocity = {1e20, -1e20, 1e20};
     SmokeVolume vol = SmokeVolume::create(room(), {}, {0, 0.1, 0}, st);
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();

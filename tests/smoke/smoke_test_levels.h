@@ -88,6 +88,27 @@ inline map::Level closedRoom(const Vec3& mn, const Vec3& mx, double t = 0.25) {
     return l;
 }
 
+// Two rooms side by side along x (inner space x in [-3.5, 3.5], y in [0, 2.5], z in [-1.5, 1.5]),
+// joined by a 1 m wide, 2 m high doorway in the 0.2 m wall at x = 0.
+inline map::Level doorwayRooms() {
+    map::Level l;
+    addRoom(l, {-3.5, 0, -1.5}, {3.5, 2.5, 1.5}, 0.25);
+    l.brushes.push_back(box({-0.1, 0, -1.5}, {0.1, 2.5, -0.5}));  // wall left of the door
+    l.brushes.push_back(box({-0.1, 0, 0.5}, {0.1, 2.5, 1.5}));    // wall right of it
+    l.brushes.push_back(box({-0.1, 2.0, -0.5}, {0.1, 2.5, 0.5}));  // lintel
+    finish(l);
+    return l;
+}
+
+// A wide floor under a high ceiling (80 x 15 x 80 m): open space for a whole cloud.
+inline map::Level openFloor() {
+    map::Level l;
+    l.brushes.push_back(box({-40, -1, -40}, {40, 0, 40}));
+    l.brushes.push_back(box({-40, 14, -40}, {40, 15, 40}));
+    finish(l);
+    return l;
+}
+
 // Smaller, faster settings for tests: 24^3 cells of 0.25 m (6 m box) unless told otherwise.
 inline SmokeSettings small(int resolution = 24, int threads = 2) {
     SmokeSettings s;

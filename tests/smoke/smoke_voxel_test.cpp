@@ -118,8 +118,7 @@ map::Level splitRoom(double wx, double thickness, double yaw) {
 void runSplitRoom(double thickness, double yaw) {
     const double wx = 0.43;  // not on a cell boundary
     const map::Level level = splitRoom(wx, thickness, yaw);
-    SmokeSettings st = testlevels::small(24);
-    st.emitExpansion = 4;  // push hard against the wall
+    SmokeSettings st = testlevels::small(24);  // the full 60 m^3 of gas pushes hard against the wall
     SmokeVolume vol = SmokeVolume::create(level, {}, {-1.2, 0.1, 0}, st);
     EXPECT_EQ(countLeakyPairs(vol, hullsOf(level, [](const map::LevelBrush&) { return true; })), 0);
     const Vec3 n{std::cos(yaw), 0, -std::sin(yaw)};  // the wall's normal (rotatedBox's local +x)
@@ -168,7 +167,6 @@ TEST(SmokeVoxel, ClosedRoomKeepsItsSmoke) {
     level.brushes.push_back(testlevels::box({-8, 5, -8}, {8, 6, 8}));      // and a sky lid far up
     testlevels::finish(level);
     SmokeSettings st = testlevels::small(32);
-    st.emitExpansion = 4;
     SmokeVolume vol = SmokeVolume::create(level, {}, {0, 0.1, 0}, st);
     for (int i = 0; i < 90; ++i) vol.step(1.0 / 30);
     const GridInfo& g = vol.grid();
@@ -185,15 +183,8 @@ TEST(SmokeVoxel, ClosedRoomKeepsItsSmoke) {
 }
 
 TEST(SmokeVoxel, SmokeFlowsThroughADoorway) {
-    // Two rooms side by side along x, joined by a 1 m wide, 2 m high doorway in the shared wall.
-    map::Level level;
-    testlevels::addRoom(level, {-3.5, 0, -1.5}, {3.5, 2.5, 1.5}, 0.25);
-    level.brushes.push_back(testlevels::box({-0.1, 0, -1.5}, {0.1, 2.5, -0.5}));  // wall left of the door
-    level.brushes.push_back(testlevels::box({-0.1, 0, 0.5}, {0.1, 2.5, 1.5}));    // wall right of it
-    level.brushes.push_back(testlevels::box({-0.1, 2.0, -0.5}, {0.1, 2.5, 0.5})); // lintel
-    testlevels::finish(level);
+    const map::Level level = testlevels::doorwayRooms();
     SmokeSettings st = testlevels::small(32);
-    st.emitExpansion = 3;
     SmokeVolume vol = SmokeVolume::create(level, {}, {-1.5, 0.1, 0}, st);
     for (int i = 0; i < 120; ++i) vol.step(1.0 / 30);
     const double beyond = densityBeyond(vol, {0.2, 0, 0}, {1, 0, 0}, 0.0);
@@ -208,7 +199,6 @@ TEST(SmokeVoxel, TriangleMeshWallDoesNotLeak) {
     wall.vertices = {{-2.6, -0.1, -1.9}, {2.9, -0.1, 3.6}, {2.9, 3.0, 3.6}, {-2.6, 3.0, -1.9}};  // x - z = -0.7
     wall.indices = {0, 1, 2, 0, 2, 3};
     SmokeSettings st = testlevels::small(24);
-    st.emitExpansion = 4;
     SmokeVolume vol = SmokeVolume::create(level, {wall}, {0.5, 0.1, -1.0}, st);  // x - z = 1.5 side
     for (int i = 0; i < 90; ++i) vol.step(1.0 / 30);
     const Vec3 n = normalize(Vec3{-1, 0, 1});  // toward x - z < -0.7
