@@ -310,49 +310,73 @@ OBSCURA_SMOKE_INLINE float neighbourSum(const float* p, std::ptrdiff_t c, const 
 // no new extremum along the axis). Positivity: each face's value is capped at donor / (the donor's
 // total outflow courant), so no cell ever sends out more than it holds, whatever the time step.
 
-// Min / max as bit selects: branch-free, so the `omp simd` loops built from them if-convert and
-// vectorise (a ternary next to a division is left as a branch). Same values as minT / maxT.
-OBSCURA_SMOKE_INLINE float minSel(float a, float b) { return sel(b < a, b, a); }
-OBSCURA_SMOKE_INLINE float maxSel(float a, float b) { return sel(b > a, b, a); }
+// The face fluxes are templated like the MacCormack blocks above: F = float (and M = bool) for
+// the reference path, F = a vector of floats (M = its comparison mask) for the optimised one,
+// which runs the same expressions lane by lane and so gives the same bits. (Plain `omp simd` loops
+// of these do not vectorise: GCC sinks arithmetic into a ternary's arms, and a conditional float
+// operation may trap, so it will not if-convert them.)
 
 // MC-limited slope from the backward and forward differences (0 at an extremum).
 // (Signs compared, not multiplied: the product of two tiny differences would be subnormal, and
 // subnormal arithmetic runs ~100x slower on x86.)
-OBSCURA_SMOKE_INLINE float mcSlope(float back, float fwd) {
-    const float m = minSel(minSel(absf(2.f * back), absf(2.f * fwd)), absf(0.5f * (back + fwd)));
-    const bool up = (back > 0.f) & (fwd > 0.f), down = (back < 0.f) & (fwd < 0.f);  // & not &&: no branch
-    return sel(up, m, sel(down, -m, 0.f));
+template <class F>
+OBSCURA_SMOKE_INLINE F mcSlopeT(F back, F fwd) {
+    const F two = F{} + 2.f, half = F{} + 0.5f, zero = F{};
+    const F m = minT(minT(absT(two * back), absT(two * fwd)), absT(half * (back + fwd)));
+    const auto up = (back > zero) & (fwd > zero), down = (back < zero) & (fwd < zero);
+    return up ? m : (down ? -m : zero);
 }
 
-// Courant number of a face's outflow from the cell on one side: |courant| if it leaves that cell.
-OBSCURA_SMOKE_INLINE float outOf(float courant, bool open) { return sel(open & (courant > 0.f), courant, 0.f); }
-// A fluid cell's outflow rate (1/s): the outward face speeds over h, for open faces. Inputs: the
-// lower and upper face velocities per axis and their masks.
-OBSCURA_SMOKE_INLINE float outflowRate(float uLo, float uHi, float vLo, float vHi, float wLo, float wHi, bool muLo, bool muHi,
-                                       bool mvLo, bool mvHi, bool mwLo, bool mwHi, float invH) {
-    return (((outOf(-uLo, muLo) + outOf(uHi, muHi)) + (outOf(-vLo, mvLo) + outOf(vHi, mvHi))) + (outOf(-wLo, mwLo) + outOf(wHi, mwHi))) * invH;
+// A face's speed out of the cell on one side: the speed if it leaves that cell through an open face.
+template <class F, class M>
+OBSCURA_SMOKE_INLINE F outOfT(F speed, M open) { return open & (speed > F{}) ? speed : F{}; }
+// A fluid cell's outflow rate (1/s; 0 for any other cell): its outward face speeds over h, for
+// open faces. Inputs: the lower and upper face velocities per axis and their masks.
+template <class F, class M>
+OBSCURA_SMOKE_INLINE F outflowRateT(F uLo, F uHi, F vLo, F vHi, F wLo, F wHi, M muLo, M muHi, M mvLo, M mvHi, M mwLo, M mwHi,
+                                    M fluid, F invH) {
+    const F sum = ((outOfT(-uLo, muLo) + outOfT(uHi, muHi)) + (outOfT(-vLo, mvLo) + outOfT(vHi, mvHi))) +
+                  (outOfT(-wLo, mwLo) + outOfT(wHi, mwHi));
+    return fluid ? sum * invH : F{};
+}
+// The outflow cap of a cell for a step of dt: 1 / its total outflow courant number (1e-20: a cell
+// at rest sends nothing, no cap needed; a cell that is not fluid has rate 0 and holds no smoke).
+template <class F>
+OBSCURA_SMOKE_INLINE F outflowCapT(F rate, float dt) {
+    const F courant = rate * dt, tiny = F{} + 1e-20f;
+    return (F{} + 1.f) / (courant > tiny ? courant : tiny);
 }
 
-// The two scalars' fluxes through one face (amount per cell volume, positive toward +axis).
-// courant = face velocity x dt / h; open: the face mask; (a, b | d, e): a field at the two cells
-// below the face and the two above it (b and d share the face); openLo / openHi: the masks of the
-// faces below b and above d; rateB / rateD: outflowRate of b and d; dt in seconds. Scalars, not
-// structs: GCC keeps struct temporaries of `omp simd` loops in memory, which stops the vectoriser.
-OBSCURA_SMOKE_INLINE float faceValue(bool positive, bool backOpen, float lw, float cap, float a, float b, float d, float e) {
-    const float donor = sel(positive, b, d), ahead = sel(positive, d, b), behind = sel(positive, a, e);
-    const float slope = mcSlope(sel(backOpen, donor - behind, 0.f), ahead - donor);
-    return minSel(donor + lw * slope, donor * cap);
+// The value a scalar carries through a face: the donor (upwind) cell's value plus its MC slope
+// times (1 - |courant|) / 2 toward the face, at most donor x the donor's outflow cap.
+// (a, b | d, e): the field at the two cells below the face and the two above (b and d share it).
+template <class F, class M>
+OBSCURA_SMOKE_INLINE F faceValueT(M positive, M backOpen, F lw, F cap, F a, F b, F d, F e) {
+    const F donor = positive ? b : d, ahead = positive ? d : b, behind = positive ? a : e;
+    const F slope = mcSlopeT(backOpen ? donor - behind : F{}, ahead - donor);
+    return minT(donor + lw * slope, donor * cap);
 }
-OBSCURA_SMOKE_INLINE void faceFluxes(float courant, bool open, bool openLo, bool openHi, float rateB, float rateD, float dt,
-                                     float da, float db, float dd, float de, float ta, float tb, float td, float te,
-                                     float& densityFlux, float& temperatureFlux) {
-    const bool positive = courant > 0.f;
-    const bool backOpen = (positive & openLo) | (!positive & openHi);
-    const float lw = 0.5f * maxSel(1.f - absf(courant), 0.f);  // >= 0: no reversed correction past courant 1
-    // 1 / the donor's total outflow courant (1e-20: a donor at rest sends nothing, no cap needed).
-    const float cap = 1.f / maxSel(sel(positive, rateB, rateD) * dt, 1e-20f);
-    densityFlux = sel(open, courant * faceValue(positive, backOpen, lw, cap, da, db, dd, de), 0.f);
-    temperatureFlux = sel(open, courant * faceValue(positive, backOpen, lw, cap, ta, tb, td, te), 0.f);
+// Both scalars' fluxes through one face (amount per cell volume, positive toward +axis).
+// courant = face velocity x dt / h; open: the face mask; openLo / openHi: the masks of the faces
+// below b and above d; capB / capD: outflowCap of b and d.
+template <class F, class M>
+OBSCURA_SMOKE_INLINE void faceFluxesT(F courant, M open, M openLo, M openHi, F capB, F capD, F da, F db, F dd, F de, F ta, F tb,
+                                      F td, F te, F& densityFlux, F& temperatureFlux) {
+    const F zero = F{}, one = F{} + 1.f;
+    const M positive = courant > zero;
+    const M backOpen = positive ? openLo : openHi;
+    const F speed = absT(courant);
+    const F lw = (F{} + 0.5f) * (speed < one ? one - speed : zero);  // >= 0: no reversed correction past courant 1
+    const F cap = positive ? capB : capD;  // the donor's
+    const F fd = courant * faceValueT(positive, backOpen, lw, cap, da, db, dd, de);
+    const F ft = courant * faceValueT(positive, backOpen, lw, cap, ta, tb, td, te);
+    densityFlux = open ? fd : zero;
+    temperatureFlux = open ? ft : zero;
+}
+OBSCURA_SMOKE_INLINE void faceFluxes(float courant, bool open, bool openLo, bool openHi, float capB, float capD, float da,
+                                     float db, float dd, float de, float ta, float tb, float td, float te, float& densityFlux,
+                                     float& temperatureFlux) {
+    faceFluxesT<float, bool>(courant, open, openLo, openHi, capB, capD, da, db, dd, de, ta, tb, td, te, densityFlux, temperatureFlux);
 }
 // A cell's new value from its six face fluxes (lower, upper per axis), then the modelled decay.
 // Values under kTiny become 0: the outflow cap keeps the sum >= 0 up to the rounding of the cap

@@ -79,7 +79,7 @@ void substepFast(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, float
 }
 
 float maxOutflowRate(SmokeState& s, ThreadPool& pool) {
-    return isa_baseline::maxOutflowRateImpl(s, pool);  // one light pass: the baseline build is plenty
+    return OBSCURA_SMOKE_DISPATCH(VectorIsa::Best, maxOutflowRateImpl(s, pool));  // a maximum: the same from either build
 }
 
 PressureSolveStats solvePressureFast(SmokeState& s, const SmokeSettings& st, ThreadPool& pool) {

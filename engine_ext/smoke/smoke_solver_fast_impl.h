@@ -169,47 +169,54 @@ struct Masks3 {
     const std::uint8_t *u, *v, *w;
 };
 
-// Each fluid cell's outflow rate (1/s; 0 elsewhere); returns the row's maximum. Out of line: see
-// smoke_multigrid_ops.h on inlined `omp simd reduction` loops.
-__attribute__((noinline)) float outflowRow(const float* u, const float* v, const float* w, Masks3 m, const std::uint8_t* cls, float* out, Dims d,
-                 float invH, std::ptrdiff_t row, int i0, int i1) {
-    const std::uint8_t *mu = m.u, *mv = m.v, *mw = m.w;
-    float worst = 0.f;
-#pragma omp simd reduction(max : worst)
-    for (int i = i0; i < i1; ++i) {
+OBSCURA_SMOKE_INLINE VecI maskLoad(const std::uint8_t* p) {  // all ones where p[l] != 0
+    VecI m;
+    for (int l = 0; l < kLanes; ++l) m[l] = p[l] != 0 ? -1 : 0;
+    return m;
+}
+OBSCURA_SMOKE_INLINE VecI fluidLoad(const std::uint8_t* cls) {  // all ones for fluid cells
+    VecI m;
+    for (int l = 0; l < kLanes; ++l) m[l] = cls[l] == kFluid ? -1 : 0;
+    return m;
+}
+
+// Each cell's outflow cap for a step of dt into `cap` (kernels::outflowCapT); returns the row's
+// largest outflow rate.
+float outflowRow(const float* u, const float* v, const float* w, Masks3 m, const std::uint8_t* cls, float* cap, Dims d,
+                 float invH, float dt, std::ptrdiff_t row, int i0, int i1) {
+    VecF worst{};
+    forVectors(i0, i1, [&](int i) {
         const std::ptrdiff_t c = row + i, y = c + d.sy, z = c + d.sz;
-        const float r = kernels::outflowRate(u[c], u[c + 1], v[c], v[y], w[c], w[z], mu[c] != 0, mu[c + 1] != 0, mv[c] != 0,
-                                             mv[y] != 0, mw[c] != 0, mw[z] != 0, invH);
-        out[c] = kernels::sel(cls[c] == kFluid, r, 0.f);
-        worst = std::max(worst, out[c]);
-    }
-    return worst;
+        const VecF r = kernels::outflowRateT(load(u + c), load(u + c + 1), load(v + c), load(v + y), load(w + c), load(w + z),
+                                             maskLoad(m.u + c), maskLoad(m.u + c + 1), maskLoad(m.v + c), maskLoad(m.v + y),
+                                             maskLoad(m.w + c), maskLoad(m.w + z), fluidLoad(cls + c), VecF{} + invH);
+        store(cap + c, kernels::outflowCapT(r, dt));
+        worst = kernels::maxT(worst, r);
+    });
+    float most = 0.f;
+    for (int l = 0; l < kLanes; ++l) most = std::max(most, worst[l]);
+    return most;
 }
 
 // One row of faces along one axis. Every pointer is at the row's start shifted to the stencil
-// slot: the face's own velocity and mask; the masks of the faces below and above; the rate of
-// the cells below (b) and above (d); each scalar at a, b, d, e (see kernels::faceFluxes).
+// slot: the face's own velocity and mask; the masks of the faces below and above; the outflow
+// cap of the cells below (b) and above (d); each scalar at a, b, d, e (see kernels::faceFluxes).
 struct FaceRow {
     const float* vel;
     const std::uint8_t *open, *openLo, *openHi;
-    const float *rateB, *rateD;
+    const float *capB, *capD;
     const float *da, *db, *dd, *de, *ta, *tb, *td, *te;
     float *outD, *outT;
 };
-void fluxRow(FaceRow f, float courantPerSpeed, float dt, int i0, int i1) {
-    const float* vel = f.vel;
-    const std::uint8_t *open = f.open, *lo = f.openLo, *hi = f.openHi;
-    const float *rb = f.rateB, *rd = f.rateD, *da = f.da, *db = f.db, *dd = f.dd, *de = f.de;
-    const float *ta = f.ta, *tb = f.tb, *td = f.td, *te = f.te;
-    float *outD = f.outD, *outT = f.outT;
-#pragma omp simd
-    for (int i = i0; i < i1; ++i) {
-        float fd, ft;
-        kernels::faceFluxes(vel[i] * courantPerSpeed, open[i] != 0, lo[i] != 0, hi[i] != 0, rb[i], rd[i], dt, da[i], db[i], dd[i],
-                            de[i], ta[i], tb[i], td[i], te[i], fd, ft);
-        outD[i] = fd;
-        outT[i] = ft;
-    }
+void fluxRow(FaceRow f, float courantPerSpeed, int i0, int i1) {
+    forVectors(i0, i1, [&](int i) {
+        VecF fd, ft;
+        kernels::faceFluxesT(load(f.vel + i) * courantPerSpeed, maskLoad(f.open + i), maskLoad(f.openLo + i), maskLoad(f.openHi + i),
+                             load(f.capB + i), load(f.capD + i), load(f.da + i), load(f.db + i), load(f.dd + i), load(f.de + i),
+                             load(f.ta + i), load(f.tb + i), load(f.td + i), load(f.te + i), fd, ft);
+        store(f.outD + i, fd);
+        store(f.outT + i, ft);
+    });
 }
 
 // The row of lower faces on `axis` of the cells in row (j, k), for fluxRow. The z faces of the
@@ -284,8 +291,8 @@ void forcesRow(float* u, float* v, float* w, const float* ox, const float* oy, c
     }
 }
 
-// Each fluid cell's outflow rate into s.outflow; returns the largest.
-float outflowRates(SmokeState& s, ThreadPool& pool) {
+// Each fluid cell's outflow cap for a step of dt into s.outflow; returns the largest outflow rate.
+float outflowCaps(SmokeState& s, ThreadPool& pool, float dt) {
     const Dims d = s.dims;
     const Masks3 m{s.faceMask[0].data(), s.faceMask[1].data(), s.faceMask[2].data()};
     const float invH = 1.f / static_cast<float>(s.grid.cellSize);
@@ -293,7 +300,7 @@ float outflowRates(SmokeState& s, ThreadPool& pool) {
         float worst = 0.f;
         for (int j = 1; j < d.ny - 1; ++j)
             worst = std::max(worst, outflowRow(s.u.data(), s.v.data(), s.w.data(), m, s.cellClass.data(), s.outflow.data(), d, invH,
-                                               d.sy * j + d.sz * k, 1, d.nx - 1));
+                                               dt, d.sy * j + d.sz * k, 1, d.nx - 1));
         s.planeA[static_cast<std::size_t>(k)] = worst;
     });
     float worst = 0.f;
@@ -309,15 +316,15 @@ void advect(SmokeState& s, ThreadPool& pool, float dt, float decayD, float decay
     const Velocity hatIn{hat.u, hat.v, hat.w};
     const VelocityOut out{s.next[2].data(), s.next[3].data(), s.next[4].data()};
 
-    outflowRates(s, pool);
+    outflowCaps(s, pool, dt);
     // Pass 1: the scalars' face fluxes (x and y faces of the interior planes, z faces up to the
     // top ghost plane's) and the velocity's semi-Lagrangian forward step.
     forPlanes(pool, 1, d.nz, [&](int k) {
-        for (int j = 1; j < d.ny - 1; ++j) fluxRow(faceRow(s, 2, j, k), scale, dt, 1, d.nx - 1);
+        for (int j = 1; j < d.ny - 1; ++j) fluxRow(faceRow(s, 2, j, k), scale, 1, d.nx - 1);
         if (k == d.nz - 1) return;
         float* scratch = s.rowScratch.data() + SmokeState::kScratchRows * static_cast<std::size_t>(d.nx) * k;  // this plane's own
-        for (int j = 1; j < d.ny - 1; ++j) fluxRow(faceRow(s, 0, j, k), scale, dt, 1, d.nx);
-        for (int j = 1; j < d.ny; ++j) fluxRow(faceRow(s, 1, j, k), scale, dt, 1, d.nx - 1);
+        for (int j = 1; j < d.ny - 1; ++j) fluxRow(faceRow(s, 0, j, k), scale, 1, d.nx);
+        for (int j = 1; j < d.ny; ++j) fluxRow(faceRow(s, 1, j, k), scale, 1, d.nx - 1);
         for (int j = 1; j < d.ny - 1; ++j) advectForwardRow(f, hat, d, scale, d.sy * j + d.sz * k, 1, d.nx - 1, scratch);
     });
     // Pass 2: the scalars from their fluxes (with the modelled decays), the velocity's MacCormack
@@ -584,7 +591,7 @@ void substepFastImpl(SmokeState& s, const SmokeSettings& st, ThreadPool& pool, f
     recordProjection(s.stats, before, after, iterations, st.pressureAbsoluteTolerance);
 }
 
-float maxOutflowRateImpl(SmokeState& s, ThreadPool& pool) { return outflowRates(s, pool); }
+float maxOutflowRateImpl(SmokeState& s, ThreadPool& pool) { return outflowCaps(s, pool, 0.f); }
 PressureSolveStats solvePressureImpl(SmokeState& s, const SmokeSettings& st, ThreadPool& pool) {
     return mgops::solve(s, st, PoolRunner{&pool});
 }

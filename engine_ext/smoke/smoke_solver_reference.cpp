@@ -44,8 +44,8 @@ void transportReference(SmokeState& s, float dt, float decayD, float decayT) {
     const Dims d = s.dims;
     const std::size_t n = s.density.size();
     const float courantPerSpeed = dt / static_cast<float>(s.grid.cellSize);
-    std::vector<float> rate(n, 0.f);
-    forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) { rate[static_cast<std::size_t>(c)] = cellOutflowRate(s, static_cast<std::size_t>(c)); });
+    std::vector<float> cap(n, 0.f);
+    forInterior(d, 1, [&](int, int, int, std::ptrdiff_t c) { cap[static_cast<std::size_t>(c)] = cellOutflowCap(s, static_cast<std::size_t>(c), dt); });
     std::vector<float> flux[2][3];
     for (auto& f : flux)
         for (auto& a : f) a.assign(n, 0.f);
@@ -64,7 +64,7 @@ void transportReference(SmokeState& s, float dt, float decayD, float decayT) {
                     const std::size_t ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(c - st),
                                       ud = static_cast<std::size_t>(c), ue = static_cast<std::size_t>(e);
                     float fd = 0.f, ft = 0.f;
-                    kernels::faceFluxes(vel[ud] * courantPerSpeed, mask[ud] != 0, mask[ub] != 0, mask[ue] != 0, rate[ub], rate[ud], dt,
+                    kernels::faceFluxes(vel[ud] * courantPerSpeed, mask[ud] != 0, mask[ub] != 0, mask[ue] != 0, cap[ub], cap[ud],
                                         s.density[ua], s.density[ub], s.density[ud], s.density[ue], s.temperature[ua],
                                         s.temperature[ub], s.temperature[ud], s.temperature[ue], fd, ft);
                     flux[0][axis][ud] = fd;

@@ -178,13 +178,14 @@ void recordProjection(SmokeStats& st, float before, float after, int iterations,
     if (before > 0.f && after > floor) st.worstRelativeResidual = std::max(st.worstRelativeResidual, static_cast<double>(after) / before);
 }
 
+float cellOutflowCap(const SmokeState& s, std::size_t c, float dt) { return kernels::outflowCapT(cellOutflowRate(s, c), dt); }
+
 float cellOutflowRate(const SmokeState& s, std::size_t c) {
-    if (s.cellClass[c] != kFluid) return 0.f;
     const std::size_t sy = static_cast<std::size_t>(s.dims.sy), sz = static_cast<std::size_t>(s.dims.sz);
     const auto& m = s.faceMask;
-    return kernels::outflowRate(s.u[c], s.u[c + 1], s.v[c], s.v[c + sy], s.w[c], s.w[c + sz], m[0][c] != 0, m[0][c + 1] != 0,
-                                m[1][c] != 0, m[1][c + sy] != 0, m[2][c] != 0, m[2][c + sz] != 0,
-                                1.f / static_cast<float>(s.grid.cellSize));
+    return kernels::outflowRateT<float, bool>(s.u[c], s.u[c + 1], s.v[c], s.v[c + sy], s.w[c], s.w[c + sz], m[0][c] != 0,
+                                              m[0][c + 1] != 0, m[1][c] != 0, m[1][c + sy] != 0, m[2][c] != 0, m[2][c + sz] != 0,
+                                              s.cellClass[c] == kFluid, 1.f / static_cast<float>(s.grid.cellSize));
 }
 
 float maxOutflowRateReference(const SmokeState& s) {

@@ -53,7 +53,7 @@ struct SmokeState {
     std::vector<float> density, temperature, u, v, w, pressure;
     // Scratch. Advection: velHat = MacCormack's forward step of u, v, w; next = the new fields;
     // flux[f][a] = scalar f's (0 density, 1 temperature) flux through each cell's lower face on
-    // axis a; outflow = each fluid cell's outflow rate (kernels::outflowRate).
+    // axis a; outflow = each cell's outflow cap for the substep (kernels::outflowCap).
     std::vector<float> velHat[3], next[5], flux[2][3], outflow;
     std::vector<float> omega[4], rhs, pressureTmp;
     std::vector<float> planeA, planeB;  // per z-plane reduction partials (fixed order)
@@ -104,6 +104,8 @@ float densityDecay(const SmokeState& s, const SmokeSettings& settings, float dt)
 void recordProjection(SmokeStats& stats, float before, float after, int iterations, double floor);
 // Outflow rate (1/s, kernels::outflowRate) of fluid cell c, 0 for any other cell.
 float cellOutflowRate(const SmokeState& s, std::size_t c);
+// Its outflow cap for a step of dt (kernels::outflowCap).
+float cellOutflowCap(const SmokeState& s, std::size_t c, float dt);
 // Max over cells of cellOutflowRate (what the substep count is chosen from), fast and plain.
 float maxOutflowRate(SmokeState& s, ThreadPool& pool);
 float maxOutflowRateReference(const SmokeState& s);
