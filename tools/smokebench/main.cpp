@@ -1,20 +1,26 @@
-// obscura_smokebench: smoke solver step times at 32^3, 64^3 and 96^3 against a memory-bandwidth
-// bound measured in the same run (STREAM triad), the pressure solvers compared, and the scalar
-// single-threaded reference at 64^3.
+// obscura_smokebench: the smoke solver's step at 32^3, 64^3 (and 96^3) on the honest roofline of
+// this machine, measured in the same run: the least memory traffic a step needs (every field
+// read and written once) against DRAM and L3 bandwidth, and the arithmetic it does against the
+// machine's peak. Also the relaxation solvers the MGPCG replaced, the scalar reference, the
+// renderer's per-frame work and the thread pool on 1 and N threads, optionally with other
+// CPU-heavy processes competing for the cores.
 //
-// Usage: obscura_smokebench [--threads N] [--quick] [--baseline]
+// Usage: obscura_smokebench [--threads N] [--quick] [--baseline] [--compete N] [--only64]
 //   --baseline: the SSE2 build of the optimised solver even where the CPU has AVX2
+//   --compete N: N spinning child processes run during the timings (an oversubscribed machine)
+//   --only64: the 64^3 play row alone (for before/after runs)
 // Prints a table and one machine-readable line starting with "smokebench ".
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstdint>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "machine.h"
 #include "map/level.h"
 #include "smoke/smoke_volume.h"
 #include "smoke/thread_pool.h"
@@ -25,59 +31,33 @@ using namespace obscura::smoke;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-// STREAM triad a[i] = b[i] + s * c[i] on the same thread count as the solver; best of `reps`.
-// Bytes counted as STREAM does: 3 arrays x 8 bytes per element (no write-allocate).
-double streamTriadGBs(ThreadPool& pool, std::size_t n, int reps) {
-    std::vector<double> a(n), b(n), c(n);
-    const int chunks = 64;
-    pool.parallelFor(chunks, [&](int c0, int c1) {  // first touch on the threads that use it
-        for (int ch = c0; ch < c1; ++ch)
-            for (std::size_t i = n * ch / chunks; i < n * (ch + 1) / chunks; ++i) {
-                a[i] = 0;
-                b[i] = 1.0;
-                c[i] = 2.0;
-            }
-    });
-    double best = 1e30;
-    const double s = 3.0;
-    for (int r = 0; r < reps; ++r) {
-        const auto t0 = Clock::now();
-        pool.parallelFor(chunks, [&](int c0, int c1) {
-            double* pa = a.data();
-            const double *pb = b.data(), *pc = c.data();
-            const std::size_t i0 = n * c0 / chunks, i1 = n * c1 / chunks;
-            for (std::size_t i = i0; i < i1; ++i) pa[i] = pb[i] + s * pc[i];
-        });
-        best = std::min(best, seconds(t0, Clock::now()));
-    }
-    volatile double sink = a[n / 2];
-    (void)sink;
-    return 3.0 * 8.0 * static_cast<double>(n) / best / 1e9;
-}
+// ---- What one substep must move, and the arithmetic it does, per cell ----
+// Bytes: the six fields (density, temperature, u, v, w, pressure) read and written once
+// (6 x 8 B) and the per-cell inputs read once (cell class 1 B, three face masks 3 B, the
+// emitter's source 4 B): 56 B. Everything else the solver touches (hats, fluxes, multigrid
+// levels, CG vectors) is its own choice, not a need.
+constexpr double kMinBytesPerCell = 6 * 8 + 1 + 3 + 4;
+// Arithmetic (adds, subtracts, multiplies, divides, square roots; not compares, selects, min,
+// max, abs), counted from smoke_kernels.h per cell:
+//   outflow rates and caps, twice (the step's substep count, the substep's caps)     2 x 8 = 16
+//   face fluxes: 3 faces x (3 shared + 2 scalars x 10)                                   69
+//   scalar updates: 2 x (6 + decay)                                                      14
+//   velocity MacCormack: 3 x (2 traces x 11 + forward blend 21 + reverse 21 + 4)        204
+//   forces: curl 36, |curl| 6, confinement 26, face forces 20                            88
+//   divergence and right-hand side                                                       10
+//   gradient and residual                                                                19
+//   MGPCG: residual 8 + V-cycle 78 to start; per iteration A d and <d, q> 9, updates 4,
+//     V-cycle 78 (level 0: 5 Jacobi sweeps x 10, residual 8, transfer 2, dot 2, start 2;
+//     coarser levels ~1/7 of a cell's 98), new direction 2: 93; the last skips the last 80
+//   relaxation solvers instead: 7 per sweep (neighbour sum 5, update 2)
+constexpr double kFlopsFixed = 16 + 69 + 14 + 204 + 88 + 10 + 19;
+constexpr double kFlopsMgStart = 8 + 78 - 80, kFlopsMgIteration = 93, kFlopsRelaxSweep = 7;
 
-// The least a step must move between the cores and memory, per cell, counting each field array
-// a pass reads or writes once (4-byte floats, 1-byte masks), as the passes are written:
-//   advect forward: read u v w d T, write 5 hats                               40
-//   advect correct: read 5 fields + 5 hats + class, write 5                     61
-//   mass renormalisation: read + write density                                   8
-//   curl: read u v w, write 3 components + |omega|                              28
-//   confinement: read 4, write 3                                                28
-//   forces + boundary: read 3 forces, T, d, u v w, 3 masks, write u v w         47
-//   divergence: read u v w, class, source, write rhs                            21
-//   gradient + residual: read p, u v w, 3 masks, rhs, diagInv, write u v w      39
-//   substep speed scan: read u v w                                              12
-//   RBGS only: split p, rhs, diagInv into colours (read 12, write 12), merge p (read 4,
-//     write 4)                                                                   32
-//   per pressure iteration: RBGS 2 sweeps x (read p 4 + rhs, diagInv of one
-//     colour 4 + write one colour 2) = 20; Jacobi read p rhs diagInv + write 16
-double bytesPerStep(std::size_t cells, int iterations, PressureSolver solver) {
-    const double fixed = 40 + 61 + 8 + 28 + 28 + 47 + 21 + 39 + 12 + (solver == PressureSolver::Jacobi ? 0 : 32);
-    const double perIteration = solver == PressureSolver::Jacobi ? 16 : 20;
-    return static_cast<double>(cells) * (fixed + perIteration * iterations);
-}
+struct Machine {
+    double dramGBs = 0, l3GBs = 0, peakGflops = 0;
+};
 
 // A big closed hall (40 x 14 x 40 m) with two pillars: every grid up to 96^3 x 0.25 m is fluid
 // except the floor and the pillars, so no step is cheap for lack of smoke room.
@@ -107,54 +87,81 @@ map::Level hall() {
 }
 
 struct Timing {
-    double msPerStep = 0, residual = 0, divergenceBefore = 0;
+    double msPerStep = 0, substeps = 0, iterations = 0;  // substeps per step, solver iterations per substep
+    double divergenceBefore = 0, residual = 0, worstRelative = 0;
     double advect = 0, forces = 0, pressure = 0, project = 0;  // ms per step per phase (optimised path)
-    int iterations = 0;
 };
 
-// Warm up (the cloud forms, the warm start settles), then time `steps` steps of 1/30 s in
-// `blocks` blocks and keep the fastest block's mean per step (and its phases): this machine is
-// shared, and another process's burst should not count as the solver's time. Residuals are
-// averaged over all steps.
-Timing timeSteps(SmokeVolume& vol, int warmup, int steps, int blocks, bool reference) {
+// Warm up `warmup` steps of 1/30 s, then time `blocks` blocks of `perBlock` steps and keep the
+// fastest block's figures: this machine is shared, and another process's burst should not count
+// as the solver's time. Divergence figures over all timed steps.
+Timing timeSteps(SmokeVolume& vol, int warmup, int perBlock, int blocks, bool reference) {
     for (int i = 0; i < warmup; ++i) vol.step(1.0 / 30);
     Timing best;
     best.msPerStep = 1e300;
-    double residual = 0, divergence = 0;
-    const int perBlock = std::max(1, steps / blocks);
+    double before = 0, residual = 0, worst = 0;
     for (int b = 0; b < blocks; ++b) {
         Timing t;
+        double subs = 0, its = 0;
         const auto t0 = Clock::now();
         for (int i = 0; i < perBlock; ++i) {
             if (reference) vol.stepReference(1.0 / 30);
             else vol.step(1.0 / 30);
-            residual += vol.stats().residual / (perBlock * blocks);
-            divergence += vol.stats().divergenceBefore / (perBlock * blocks);
-            t.advect += vol.stats().msAdvect / perBlock;
-            t.forces += vol.stats().msForces / perBlock;
-            t.pressure += vol.stats().msPressure / perBlock;
-            t.project += vol.stats().msProject / perBlock;
+            const SmokeStats& s = vol.stats();
+            before += s.divergenceBefore / (perBlock * blocks);
+            residual += s.residual / (perBlock * blocks);
+            worst = std::max(worst, s.worstRelativeResidual);
+            subs += s.substeps;
+            its += s.pressureIterationsTotal;
+            t.advect += s.msAdvect / perBlock;
+            t.forces += s.msForces / perBlock;
+            t.pressure += s.msPressure / perBlock;
+            t.project += s.msProject / perBlock;
         }
         t.msPerStep = 1e3 * seconds(t0, Clock::now()) / perBlock;
+        t.substeps = subs / perBlock;
+        t.iterations = its / subs;
         if (t.msPerStep < best.msPerStep) best = t;
     }
+    best.divergenceBefore = before;
     best.residual = residual;
-    best.divergenceBefore = divergence;
-    best.iterations = vol.stats().pressureIterations * vol.stats().substeps;
+    best.worstRelative = worst;
     return best;
+}
+
+struct Roofline {
+    double mb, mflop, dramMs, l3Ms, computeMs;
+    double roofMs() const { return std::max(dramMs, computeMs); }
+};
+Roofline roofline(const Machine& m, std::size_t cells, const Timing& t, PressureSolver solver, int sweeps) {
+    const double perSubstep = kFlopsFixed + (solver == PressureSolver::MultigridCG ? kFlopsMgStart + kFlopsMgIteration * t.iterations
+                                                                                  : kFlopsRelaxSweep * sweeps);
+    Roofline r{};
+    r.mb = static_cast<double>(cells) * kMinBytesPerCell * t.substeps / 1e6;
+    r.mflop = static_cast<double>(cells) * perSubstep * t.substeps / 1e6;
+    r.dramMs = r.mb / m.dramGBs;
+    r.l3Ms = r.mb / m.l3GBs;
+    r.computeMs = r.mflop / m.peakGflops;
+    return r;
+}
+
+const char* solverName(PressureSolver s) {
+    return s == PressureSolver::MultigridCG ? "MGPCG" : s == PressureSolver::Jacobi ? "Jacobi-20" : "RBGS-20";
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    int threads = 0;
-    bool quick = false, baseline = false;
+    int threads = 0, compete = 0;
+    bool quick = false, baseline = false, only64 = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--compete") && i + 1 < argc) compete = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--baseline")) baseline = true;
+        else if (!std::strcmp(argv[i], "--only64")) only64 = true;
         else {
-            std::fprintf(stderr, "usage: %s [--threads N] [--quick] [--baseline]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--threads N] [--quick] [--baseline] [--compete N] [--only64]\n", argv[0]);
             return 2;
         }
     }
@@ -167,68 +174,91 @@ int main(int argc, char** argv) {
     auto pool = std::make_shared<ThreadPool>(threads);
     const int nThreads = pool->threads();
 
-    // 3 x 32 M doubles = 768 MB: 24x the 32 MB L3 of the machine this was written on.
-    const std::size_t streamN = quick ? (std::size_t{8} << 20) : (std::size_t{32} << 20);
-    const double gbs = streamTriadGBs(*pool, streamN, quick ? 3 : 6);
-    std::printf("obscura_smokebench: %d threads (hardware: %u), %s build of the solver\n", nThreads,
-                std::thread::hardware_concurrency(), avx2 ? "AVX2" : "baseline (SSE2)");
-    std::printf("STREAM triad over 3 x %zu doubles: %.2f GB/s\n\n", streamN, gbs);
-    std::printf("%-6s %-10s %6s %10s %10s %9s %9s %9s %7s\n", "grid", "solver", "iters", "div_in", "residual", "ms/step",
-                "MB/step", "bound_ms", "ratio");
+    Machine m;
+    // DRAM: 3 x 32 M doubles = 768 MB, 24x the 32 MB L3 of the machine this was written on.
+    // L3: 3 x 512 K doubles = 12 MB, over the 1 MB L2 of each core, well inside the L3.
+    const std::size_t dramN = quick || only64 ? (std::size_t{8} << 20) : (std::size_t{32} << 20);
+    m.dramGBs = smokebench::triadGBs(*pool, dramN, quick || only64 ? 3 : 6);
+    m.l3GBs = smokebench::triadGBs(*pool, std::size_t{512} << 10, 60);
+    m.peakGflops = smokebench::peakGflops(*pool, avx2);
+    std::printf("obscura_smokebench: %d threads (hardware: %u), %s build of the solver%s\n", nThreads,
+                std::thread::hardware_concurrency(), avx2 ? "AVX2" : "baseline (SSE2)",
+                compete ? (", " + std::to_string(compete) + " competing CPU-bound processes").c_str() : "");
+    std::printf("machine, measured now on %d threads: DRAM %.1f GB/s (STREAM triad, 3 x %zu doubles), L3 %.1f GB/s "
+                "(triad, 12 MB), peak %.1f GFLOP/s (%s multiply + add, no FMA)\n",
+                nThreads, m.dramGBs, dramN, m.l3GBs, m.peakGflops, avx2 ? "8-float" : "4-float");
+    std::printf("a step's least traffic: %.0f B/cell a substep (6 fields read and written, class + masks + source read)\n\n",
+                kMinBytesPerCell);
+    std::printf("%-6s %-10s %5s %5s %9s %9s %9s %8s %8s %8s %7s %7s %7s %7s %6s\n", "grid", "solver", "subs", "its",
+                "div_in", "rel_left", "ms/step", "MB_min", "MFLOP", "GFLOP/s", "dram_ms", "l3_ms", "fp_ms", "x_roof",
+                "x_l3");
+    if (compete) smokebench::startCompetitors(compete);
 
-    const int warmup = quick ? 10 : 45, steps = quick ? 5 : 20;
     std::string machine = "smokebench threads=" + std::to_string(nThreads) + " isa=" + (avx2 ? "avx2" : "baseline") +
-                          " stream_gbs=" + std::to_string(gbs);
-    double ms64 = 0;
-    auto row = [&](int n, PressureSolver solver, bool reference) {
+                          " compete=" + std::to_string(compete) + " dram_gbs=" + std::to_string(m.dramGBs) +
+                          " l3_gbs=" + std::to_string(m.l3GBs) + " peak_gflops=" + std::to_string(m.peakGflops);
+    auto row = [&](const char* label, int n, PressureSolver solver, bool reference, int warmup, int perBlock, int blocks,
+                   std::shared_ptr<ThreadPool> rowPool) {
         SmokeSettings st = base;
         st.resolution = n;
         st.pressureSolver = solver;
-        SmokeVolume vol = SmokeVolume::create(level, {}, centre, st, reference ? std::make_shared<ThreadPool>(1) : pool);
-        const Timing t = timeSteps(vol, warmup, reference ? std::max(3, steps / 4) : steps, reference ? 1 : 4, reference);
-        const double bytes = bytesPerStep(vol.grid().cells(), t.iterations, solver);
-        const double boundMs = bytes / (gbs * 1e9) * 1e3;
-        const char* name = reference ? "reference" : solver == PressureSolver::Jacobi ? "Jacobi" : "RBGS";
-        std::printf("%3d^3  %-10s %6d %10.4f %10.5f %9.2f %9.1f %9.2f %7.2f\n", n, name, t.iterations, t.divergenceBefore,
-                    t.residual, t.msPerStep, bytes / 1e6, boundMs, t.msPerStep / boundMs);
-        if (!reference) {
-            // The pressure iterations alone against their share of the bound (20 or 16 B/cell/iteration).
-            const double pressureBytes = static_cast<double>(vol.grid().cells()) * t.iterations *
-                                         (solver == PressureSolver::Jacobi ? 16 : 20);
-            const double pressureBoundMs = pressureBytes / (gbs * 1e9) * 1e3;
-            std::printf("       phases: advect %.2f ms, forces %.2f ms, pressure %.2f ms (bound %.2f, ratio %.2f), "
-                        "projection %.2f ms\n",
-                        t.advect, t.forces, t.pressure, pressureBoundMs, t.pressure / pressureBoundMs, t.project);
-        }
+        SmokeVolume vol = SmokeVolume::create(level, {}, centre, st, rowPool);
+        const Timing t = timeSteps(vol, warmup, perBlock, blocks, reference);
+        const Roofline r = roofline(m, vol.grid().cells(), t, solver, st.pressureIterations);
+        std::printf("%3d^3  %-10s %5.2f %5.1f %9.3f %9.2e %9.2f %8.1f %8.0f %8.1f %7.2f %7.2f %7.2f %7.1f %6.1f  %s\n", n,
+                    reference ? "reference" : solverName(solver), t.substeps, t.iterations, t.divergenceBefore,
+                    t.worstRelative, t.msPerStep, r.mb, r.mflop, r.mflop / t.msPerStep, r.dramMs, r.l3Ms, r.computeMs,
+                    t.msPerStep / r.roofMs(), t.msPerStep / std::max(r.l3Ms, r.computeMs), label);
+        if (!reference)
+            std::printf("       phases: advect %.2f ms, forces %.2f ms, pressure %.2f ms, projection %.2f ms\n", t.advect, t.forces,
+                        t.pressure, t.project);
         std::fflush(stdout);
-        if (!reference && solver == PressureSolver::RedBlackGaussSeidel) {  // what the renderer adds per frame
-            std::vector<std::uint8_t> rg8;
-            const auto t0 = Clock::now();
-            const int reps = 5;
-            for (int r = 0; r < reps; ++r) {
-                vol.computeTransmittance({0.3, 1.0, 0.2});
-                vol.exportRG8(rg8);
-            }
-            const double ms = 1e3 * seconds(t0, Clock::now()) / reps;
-            std::printf("       transmittance (light 0.3, 1, 0.2) + RG8 export: %.2f ms\n", ms);
-            machine += " shadow" + std::to_string(n) + "_ms=" + std::to_string(ms);
-        }
-        const std::string key = std::string(reference ? "ref" : solver == PressureSolver::Jacobi ? "jacobi" : "rbgs") +
-                                std::to_string(n);
-        machine += " " + key + "_ms=" + std::to_string(t.msPerStep) + " " + key + "_bound_ms=" + std::to_string(boundMs) +
-                   " " + key + "_residual=" + std::to_string(t.residual);
-        return t.msPerStep;
+        const std::string key = std::string(label) + std::to_string(n);
+        machine += " " + key + "_ms=" + std::to_string(t.msPerStep) + " " + key + "_roof_ms=" + std::to_string(r.roofMs()) +
+                   " " + key + "_its=" + std::to_string(t.iterations) + " " + key + "_rel=" + std::to_string(t.worstRelative);
+        return std::make_pair(t, std::move(vol));
     };
-    row(32, PressureSolver::RedBlackGaussSeidel, false);
-    ms64 = row(64, PressureSolver::RedBlackGaussSeidel, false);
-    row(64, PressureSolver::Jacobi, false);
-    if (!quick) row(96, PressureSolver::RedBlackGaussSeidel, false);
-    const double ref = row(64, PressureSolver::RedBlackGaussSeidel, true);
-    std::printf("\nspeedup at 64^3 (RBGS, %d threads) over the scalar single-threaded reference: %.2fx\n", nThreads,
-                ref / ms64);
-    std::printf("ratio = ms/step / bound_ms, bound = MB/step at the STREAM figure (see bytesPerStep for the count);\n"
-                "ms/step: the fastest of 4 blocks of %d steps (the reference: one block)\n", std::max(1, steps / 4));
-    machine += " speedup64=" + std::to_string(ref / ms64);
+    // Play: 1.5 s into a grenade (the bloom is over), 4 blocks of 5 steps of 1/30 s.
+    const int warmup = 45, perBlock = quick ? 3 : 5;
+    auto [play64, vol64] = row("play", 64, PressureSolver::MultigridCG, false, warmup, perBlock, 4, pool);
+    if (!only64) {
+        row("play", 32, PressureSolver::MultigridCG, false, warmup, perBlock, 4, pool);
+        if (!quick) row("play", 96, PressureSolver::MultigridCG, false, warmup, perBlock, 4, pool);
+        // The bloom (0.3-0.7 s: the gas still pouring out, up to 4 substeps).
+        row("bloom", 64, PressureSolver::MultigridCG, false, 9, 3, 4, pool);
+        row("relax", 64, PressureSolver::RedBlackGaussSeidel, false, warmup, perBlock, 4, pool);
+        row("relax", 64, PressureSolver::Jacobi, false, warmup, perBlock, 4, pool);
+        const auto ref = row("ref", 64, PressureSolver::MultigridCG, true, warmup, quick ? 2 : 4, 1, std::make_shared<ThreadPool>(1));
+        std::printf("\nspeedup at 64^3 (%d threads) over the scalar single-threaded reference: %.2fx\n", nThreads,
+                    ref.first.msPerStep / play64.msPerStep);
+        machine += " speedup64=" + std::to_string(ref.first.msPerStep / play64.msPerStep);
+
+        // What the renderer adds per frame: the transmittance toward the sun and the RG8 export.
+        std::vector<std::uint8_t> rg8;
+        const auto t0 = Clock::now();
+        const int reps = 5;
+        for (int r = 0; r < reps; ++r) {
+            vol64.computeTransmittance({0.3, 1.0, 0.2});
+            vol64.exportRG8(rg8);
+        }
+        const double shadowMs = 1e3 * seconds(t0, Clock::now()) / reps;
+        std::printf("64^3 transmittance (light 0.3, 1, 0.2) + RG8 export: %.2f ms\n", shadowMs);
+        machine += " shadow64_ms=" + std::to_string(shadowMs);
+
+        // Thread scaling: the same 64^3 play row on one thread (the pool above has nThreads).
+        if (nThreads > 1) {
+            const auto one = row("one_thread", 64, PressureSolver::MultigridCG, false, warmup, perBlock, 4, std::make_shared<ThreadPool>(1));
+            std::printf("64^3 on 1 thread %.2f ms, on %d threads %.2f ms: %.2fx\n", one.first.msPerStep, nThreads, play64.msPerStep,
+                        one.first.msPerStep / play64.msPerStep);
+            machine += " scaling64=" + std::to_string(one.first.msPerStep / play64.msPerStep);
+        }
+    }
+    if (compete) smokebench::stopCompetitors();
+    std::printf("\nsubs: substeps per step; its: MGPCG iterations per substep; rel_left: the largest divergence left after\n"
+                "a projection over the largest before it; MB_min / MFLOP: the least traffic and the arithmetic per step;\n"
+                "dram_ms / l3_ms / fp_ms: those at the measured DRAM and L3 bandwidth and the peak; x_roof: ms/step over\n"
+                "max(dram_ms, fp_ms), the roofline's bound; x_l3: over max(l3_ms, fp_ms) (the state fits in the L3).\n"
+                "ms/step: the fastest of 4 blocks (the reference: one block).\n");
     std::printf("%s\n", machine.c_str());
     return 0;
 }
