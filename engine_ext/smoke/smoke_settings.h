@@ -54,8 +54,9 @@ struct SmokeSettings {
     // grenade lies: the gas is a volume source (divergence) in the pressure equation, and carries
     // emitSmokeDensity and emitTemperature in with it, so the cloud's density is the gas's,
     // diluted only by mixing.
-    double emitterRadius = 0.75;   // metres (113 cells of 0.25 m): wide enough that the gas leaves
-                                   // it at ~6 m/s, not at the 20 m/s a 0.5 m sphere would need
+    double emitterRadius = 1.0;    // metres (268 cells of 0.25 m): the gas leaves it slowly enough
+                                   // for 2 substeps a 20 Hz step during the bloom (a 0.75 m one
+                                   // needed 4, for the same bloom: README.md, "Tuning")
     double emitterLift = 0.3;      // metres above the detonation point (the canister's plume)
     double emitGasRate = 50.0;     // m^3/s for emitTime: 60 m^3 of smoke, a ~3 m radius dome on
                                    // open floor within a second or so (CS2's smoke is ~3.5 m wide)
