@@ -99,9 +99,10 @@ struct SmokeSettings {
 
     // Self-shadowing: transmittance = exp(-shadowSigma * integral of density along the light ray).
     double shadowSigma = 4.0;  // per metre per density unit: density 1 over 25 cm passes e^-1
-    double exportDensityScale = 1.25;  // density mapped to 1.0 (255) in exportRG8: the transport
-                                       // never exceeds emitSmokeDensity by more than ~2 % (the
-                                       // canister's cells while emitting), so nothing saturates
+    double exportDensityScale = 2.0;  // density mapped to 1.0 (255) in exportRG8: in open space the
+                                      // cloud never exceeds emitSmokeDensity (1); a sealed room
+                                      // compresses the gas and reaches ~2 (measured 1.99 in the
+                                      // tests' sealed 69 m^3 room), so nothing saturates
 };
 
 }  // namespace obscura::smoke

@@ -18,7 +18,20 @@ namespace {
 // taking a larger share of the same total).
 void chooseEmitterCells(SmokeState& s, const SmokeSettings& st) {
     const GridInfo& g = s.grid;
+    // The plume starts emitterLift above the canister, unless that point is not free space the
+    // gas reaches (a grenade stuck under a ceiling): then at the seed cell's centre. (From a point
+    // inside the ceiling the nearest cells are a thin sheet under it, which reached the grid's
+    // border and lost gas there at once.)
     s.emitterCentre = s.centre + Vec3{0, st.emitterLift, 0};
+    const Vec3 lifted = g.toCellCoords(s.emitterCentre);
+    const int li = static_cast<int>(std::lround(lifted.x)), lj = static_cast<int>(std::lround(lifted.y)),
+              lk = static_cast<int>(std::lround(lifted.z));
+    if (!g.contains(li, lj, lk) || s.staticClass[g.index(li, lj, lk)] != kFluid) {
+        const int si = static_cast<int>(s.startCell % static_cast<std::size_t>(g.nx));
+        const int sj = static_cast<int>((s.startCell / static_cast<std::size_t>(g.nx)) % static_cast<std::size_t>(g.ny));
+        const int sk = static_cast<int>(s.startCell / (static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.ny)));
+        s.emitterCentre = g.cellCentre(si, sj, sk);
+    }
     const double h = g.cellSize, r = std::max(0.0, st.emitterRadius);
     const double want = std::round(4.0 / 3.0 * 3.14159265358979323846 * r * r * r / (h * h * h));
     const std::size_t target = static_cast<std::size_t>(std::clamp(want, 1.0, 1e6));
