@@ -62,8 +62,9 @@ struct SmokeSettings {
                                    // open floor within a second or so (CS2's smoke is ~3.5 m wide)
     double emitSmokeDensity = 1.0; // density units of the released gas: 1 = extinction shadowSigma
                                    // per metre (the renderer's own scale; README.md, "Density")
-    double emitTemperature = 1.0;  // kelvin above ambient: the dome rolls a little, then settles as
-                                   // it cools (3 K lifted the whole cloud: README.md, "Tuning")
+    double emitTemperature = 1.0;  // kelvin above ambient of all the gas (the old 3 K was held only
+                                   // in the emitter's cells): the dome rolls a little, then settles
+                                   // as it cools (centre of mass 1.1-1.4 m; 3 K: up to 1.5 m)
     Vec3 emitVelocity{0, 0, 0};    // m/s set on the emitter cells' faces (e.g. a jet direction)
 
     // Forces. buoyancy (Fedkiw et al. 2001): a = (buoyancy * T - densityWeight * density) up.
