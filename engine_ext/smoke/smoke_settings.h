@@ -29,7 +29,7 @@ struct SmokeSettings {
     // Pressure projection (MultigridCG): iterate until the largest divergence left is at most
     // pressureTolerance times the largest before the projection. 2.5e-4 leaves a factor 4 under the
     // 1e-3 the solver promises (the recursive residual CG stops on drifts a little from the true
-    // one); measured in play it takes 2-6 iterations (README.md). The absolute floor: below
+    // one); measured in play it takes 1-8 iterations a substep (README.md). The absolute floor: below
     // 1e-5 1/s (a cell's volume changing by 0.001 % a second) a flow counts as divergence-free
     // even if the relative figure is not reached (a nearly still cloud).
     PressureSolver pressureSolver = PressureSolver::MultigridCG;
