@@ -2,6 +2,8 @@
 #include "settings.h"
 
 #include "replay/replay_script.h"
+#include "frame/frame_knobs.h"
+#include "ssao/ssao_knobs.h"
 #include "ssao/ssao_modes.h"
 
 #include <boost/program_options.hpp>
@@ -139,7 +141,8 @@ struct Option {
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
-                                    "timedemo", "config", "data-dir", "log", "debug-max-render-targets"};
+                                    "timedemo", "config", "data-dir", "log", "debug-max-render-targets",
+                                    "debug-unsupported-formats"};
 
 struct SettingsParser::Impl {
     std::vector<Option> options;
@@ -167,6 +170,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     auto integer = [](int S::*m, const std::string& name, double lo, double hi) {
         return [m, name, lo, hi](S& s, W v, W where) { s.*m = static_cast<int>(parseClamped(v, lo, hi, where, name)); };
     };
+    // A knob's range comes from its table (core/knob.h).
+    auto knob = [num](double S::*m, const Knob& k) { return num(m, k.name, k.min, k.max); };
 
     I.add({"level", "level .map file (default: media/levels/arena.map)", str(&S::level)});
     I.add({"map-scale", "map units per metre (0 = worldspawn 'units_per_metre' or 32)", num(&S::mapScale, "map-scale", 0, 1024)});
@@ -194,9 +199,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                }
                s.ssao = v;
            }});
-    // Radius 0.05..5 m: below, AO is sub-pixel at play distance; above, it darkens whole rooms.
-    I.add({"ssao-radius", "AO radius in metres", num(&S::ssaoRadius, "ssao-radius", 0.05, 5)});
-    I.add({"ssao-intensity", "AO strength", num(&S::ssaoIntensity, "ssao-intensity", 0, 4)});
+    I.add({ssao::kRadius.name, "AO radius in metres", knob(&S::ssaoRadius, ssao::kRadius)});
+    I.add({ssao::kIntensity.name, "AO strength", knob(&S::ssaoIntensity, ssao::kIntensity)});
     I.add({"ssao-resolution", "AO buffer resolution: full, half or quarter", [](S& s, W v, W where) {
                if (v != "half" && v != "full" && v != "quarter")
                    fail(where, "ssao-resolution", "'" + v + "', expected full, half or quarter");
@@ -205,7 +209,17 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"ao-only", "show the AO term alone", flag(&S::aoOnly, "ao-only"), true});
     I.add({"master-volume", "master volume 0..1", num(&S::masterVolume, "master-volume", 0, 1)});
     I.add({"effects-volume", "sound effects volume 0..1 (times the master volume)", num(&S::effectsVolume, "effects-volume", 0, 1)});
-    I.add({"ssao-samples", "AO samples per pixel (1..32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
+    I.add({ssao::kSamples.name, "AO samples per pixel (1.." + std::to_string(static_cast<int>(ssao::kSamples.max)) + ")",
+           integer(&S::ssaoSamples, ssao::kSamples.name, ssao::kSamples.min, ssao::kSamples.max)});
+    I.add({frame::kExposure.name, "multiplies the light before the tone map", knob(&S::exposure, frame::kExposure)});
+    I.add({"debug-unsupported-formats", "debug: pretend these render-target formats are missing (comma-separated OGRE "
+                                        "names, e.g. PF_FLOAT32_GR; 3d: for volume textures)",
+           [](S& s, W v, W) {
+               s.debugUnsupportedFormats.clear();
+               std::stringstream in(v);
+               for (std::string f; std::getline(in, f, ',');)
+                   if (!f.empty()) s.debugUnsupportedFormats.push_back(f);
+           }});
     I.add({"debug-max-render-targets", "debug: pretend the GPU has at most N simultaneous render targets (0 = as it is)",
            integer(&S::debugMaxRenderTargets, "debug-max-render-targets", 0, 8)});
     I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});

@@ -3,6 +3,9 @@
 // name, one parser and one range check everywhere.
 #pragma once
 
+#include "frame/frame_knobs.h"
+#include "ssao/ssao_knobs.h"
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -47,14 +50,16 @@ struct Settings {
     // engine_ext/ssao/README.md: lowest error of the modes at a third of the cost of a full-resolution
     // 32-sample hemisphere.
     std::string ssao = "horizon";
-    double ssaoRadius = 0.6;     // metres
-    double ssaoIntensity = 2.0;  // measured: against the ray-traced reference, 2 beats 1 on most views
-    int ssaoSamples = 16;
+    double ssaoRadius = ssao::kRadius.value;  // defaults and reasons: engine_ext/ssao/ssao_knobs.h
+    double ssaoIntensity = ssao::kIntensity.value;
+    int ssaoSamples = static_cast<int>(ssao::kSamples.value);
     // AO buffers at a quarter of the width and height: with the depth-aware blur and upsampling it
     // looked the same as half at 720p, measured lower error than full-resolution 32 samples, and
     // cut the AO passes' cost to a quarter (engine_ext/ssao/README.md).
     double ssaoResolution = 0.25;  // of the frame's width and height: 1, 0.5 or 0.25
     int debugMaxRenderTargets = 0;  // debug: pretend the GPU has at most this many MRTs (0 = real)
+    std::vector<std::string> debugUnsupportedFormats;  // debug: render-target formats pretended missing
+    double exposure = frame::kExposure.value;  // engine_ext/frame/frame_knobs.h
     bool aoOnly = false;         // show the AO term alone (P toggles it)
     // Headless runs
     bool headless = false;

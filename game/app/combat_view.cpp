@@ -1,6 +1,7 @@
 // See combat_view.h.
 #include "app/combat_view.h"
 
+#include "frame/frame.h"
 #include "render/level_materials.h"
 #include "render/ogre_convert.h"
 #include "render/prop_view.h"
@@ -27,6 +28,7 @@ CombatView::CombatView(Ogre::SceneManager& scene, render::LevelMaterials& materi
     flash_->setMaterialName("Obscura/Effects/Glow");
     flash_->setDefaultDimensions(0.35f, 0.35f);
     flash_->setCastShadows(false);
+    flash_->setRenderQueueGroup(frame::kEffectsQueue);  // drawn into the HDR light after lighting
     flashNode_ = cameraNode.createChildSceneNode(kMuzzle);
     flashNode_->attachObject(flash_);
     flashNode_->setVisible(false);
@@ -35,6 +37,7 @@ CombatView::CombatView(Ogre::SceneManager& scene, render::LevelMaterials& materi
     sparks_->setMaterialName("Obscura/Effects/Glow");
     sparks_->setDefaultDimensions(0.06f, 0.06f);
     sparks_->setCastShadows(false);
+    sparks_->setRenderQueueGroup(frame::kEffectsQueue);
     scene_.getRootSceneNode()->attachObject(sparks_);
 }
 

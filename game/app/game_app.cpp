@@ -19,7 +19,9 @@
 #include "replay/replay_recorder.h"
 #include "replay/replay_script.h"
 #include "sim/simulation.h"
+#include "frame/frame.h"
 #include "ssao/ssao_compositor.h"
+#include "ssao/ssao_knobs.h"
 #include "ssao/ssao_modes.h"
 
 #include <Ogre.h>
@@ -151,6 +153,7 @@ void GameApp::locateResources() {
 void GameApp::shutdown() {
     // Order matters (see shared/README): our OGRE objects first, then RTSS, overlays, root.
     imguiInput_.reset();
+    frame_.reset();  // before the techniques plugged into it
     hud_.reset();
     menu_.reset();
     smoke_.reset();
@@ -262,8 +265,14 @@ void GameApp::createScene() {
     Ogre::LogManager::getSingleton().logMessage(os.str());
     std::cout << os.str() << "\n";
 
-    ao_ = std::make_unique<ssao::AmbientOcclusion>(*viewport_, *camera_, settings_.seed);
-    ao_->limitRenderTargets(settings_.debugMaxRenderTargets);
+    frame::FrameSettings fs;
+    fs.maxRenderTargets = settings_.debugMaxRenderTargets;
+    fs.unsupportedFormats = settings_.debugUnsupportedFormats;
+    fs.exposure = static_cast<float>(settings_.exposure);
+    frame_ = std::make_unique<frame::Frame>(*viewport_, *camera_, fs);
+    ao_ = std::make_unique<ssao::AmbientOcclusion>(settings_.seed);
+    frame_->add(*ao_);
+    frame_->add(smoke_->technique());
     // The heightfield mode's height map, over the level's brushes (models stand inside them).
     if (!level_->bounds.empty())
         ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level_->bounds.min), render::toOgre(level_->bounds.max)),
@@ -293,13 +302,15 @@ void GameApp::createScene() {
         ImGui::Text("speed %.2f m/s %s", std::hypot(p.velocity.x, p.velocity.z), p.onGround ? "on ground" : "in air");
     });
     hud_->addPanelSection("Ambient occlusion", [this] {
-        ImGui::Text("mode: %s (O / Shift+O)", ao_->mode().c_str());
+        ImGui::Text("mode: %s (O / Shift+O)", aoStatus().c_str());
         float radius = static_cast<float>(settings_.ssaoRadius), intensity = static_cast<float>(settings_.ssaoIntensity);
-        bool changed = ImGui::SliderFloat("radius (m)", &radius, 0.05f, 5.0f);
-        changed |= ImGui::SliderFloat("intensity", &intensity, 0.0f, 4.0f);
-        changed |= ImGui::SliderInt("samples", &settings_.ssaoSamples, 1, 32);
-        bool aoOnly = ao_->aoOnly();
-        if (ImGui::Checkbox("AO only", &aoOnly)) ao_->setAoOnly(settings_.aoOnly = aoOnly);
+        bool changed = ImGui::SliderFloat("radius (m)", &radius, static_cast<float>(ssao::kRadius.min),
+                                          static_cast<float>(ssao::kRadius.max));
+        changed |= ImGui::SliderFloat("intensity", &intensity, static_cast<float>(ssao::kIntensity.min),
+                                       static_cast<float>(ssao::kIntensity.max));
+        changed |= ImGui::SliderInt("samples", &settings_.ssaoSamples, static_cast<int>(ssao::kSamples.min),
+                                    static_cast<int>(ssao::kSamples.max));
+        changed |= ImGui::Checkbox("AO only", &settings_.aoOnly);
         if (changed) {
             settings_.ssaoRadius = radius;
             settings_.ssaoIntensity = intensity;
@@ -319,11 +330,14 @@ void GameApp::applyAoSettings() {
     k.samples = settings_.ssaoSamples;
     k.resolution = settings_.ssaoResolution;
     ao_->setKnobs(k);
-    ao_->setAoOnly(settings_.aoOnly);
-    if (!ao_->setMode(settings_.ssao)) {
-        std::cerr << "obscura: " << ao_->failureReason() << "\n";
-        settings_.ssao = "off";
-    }
+    ao_->setMode(settings_.ssao);  // the frame rebuilds its chain at the next frame
+    frame_->setView(settings_.aoOnly ? frame::View::AO : frame::View::Scene);
+    frame_->setExposure(static_cast<float>(settings_.exposure));
+}
+
+std::string GameApp::aoStatus() const {
+    // A mode this GPU cannot run was turned off by the frame with a message: say so.
+    return frame_->offReason(*ao_).empty() ? ao_->mode() : ao_->mode() + " (off here)";
 }
 
 void GameApp::stepSimulation() {
@@ -357,7 +371,7 @@ void GameApp::handleTriggeredActions() {
                 break;
             case Action::AoOnlyView:
                 settings_.aoOnly = !settings_.aoOnly;
-                ao_->setAoOnly(settings_.aoOnly);
+                applyAoSettings();
                 break;
             default: break;  // movement actions are read as held states
         }
@@ -418,7 +432,7 @@ void GameApp::renderFrame(double frameMs) {
     hs.crosshair = !menu_->isOpen();
     hs.frameMs = frameMs;
     hs.frameMsIsFixed = settings_.headless;
-    hs.status.push_back("AO: " + ao_->mode() + (ao_->aoOnly() ? " (AO only)" : ""));
+    hs.status.push_back("AO: " + aoStatus() + (settings_.aoOnly ? " (AO only)" : ""));
     const auto& w = sim_->weapon();
     hs.magazine = w.magazine;
     hs.magazineSize = w.magazineSize;
@@ -428,7 +442,8 @@ void GameApp::renderFrame(double frameMs) {
     hs.hitMarker = hitMarker_;
     hs.throwCharge = sim_->throwCharge() > 0 ? sim_->throwCharge() : -1.0;
     hud_->update(hs);
-    smoke_->render(*ao_);
+    smoke_->render();
+    frame_->update(static_cast<float>(static_cast<double>(sim_->tick()) / settings_.tickRate));
     mRoot->renderOneFrame();
 }
 
@@ -633,7 +648,7 @@ void GameApp::applySetting(const std::string& key, const std::string& value, con
     if (key == "fov") {
         const double aspect = camera_->getAspectRatio();
         camera_->setFOVy(Ogre::Radian(static_cast<Ogre::Real>(2.0 * std::atan(std::tan(degToRad(settings_.fov) * 0.5) / aspect))));
-    } else if (key.rfind("ssao", 0) == 0 || key == "ao-only") {
+    } else if (key.rfind("ssao", 0) == 0 || key == "ao-only" || key == "exposure") {
         applyAoSettings();
     } else if (key == "smoke-at") {
         smoke_->spawn(parseVec3(settings_.smokeAt));

@@ -28,6 +28,7 @@ namespace sim { class Simulation; struct PlayerState; }
 namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; }
 namespace replay { struct Script; class Recorder; }
 namespace ssao { class AmbientOcclusion; }
+namespace frame { class Frame; }
 class CombatView;
 class GameAudio;
 class GameSmoke;
@@ -95,7 +96,9 @@ private:
     std::unique_ptr<render::PropView> props_;
     std::unique_ptr<render::Hud> hud_;
     std::unique_ptr<ssao::AmbientOcclusion> ao_;
+    std::unique_ptr<frame::Frame> frame_;  // the pass order; ao_ and smoke_'s technique plug into it
     void applyAoSettings();
+    std::string aoStatus() const;
     std::unique_ptr<GameAudio> audio_;
     std::unique_ptr<CombatView> combat_;
     std::unique_ptr<GameSmoke> smoke_;

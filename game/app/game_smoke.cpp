@@ -3,7 +3,6 @@
 
 #include "smoke_obstacles.h"
 
-#include "ssao/ssao_compositor.h"
 
 #include <iostream>
 
@@ -57,11 +56,9 @@ void GameSmoke::onTick(const std::vector<sim::SimEvent>& events, const sim::Simu
     dirty_ = true;
 }
 
-void GameSmoke::render(ssao::AmbientOcclusion& post) {
-    if (dirty_) textures_.upload(manager_);
+void GameSmoke::render() {
+    render_.update(manager_, dirty_, static_cast<float>(static_cast<double>(ticks_) * tickSeconds_));
     dirty_ = false;
-    post.setVolumes(textures_.bindings(), static_cast<float>(manager_.settings().exportDensityScale),
-                    static_cast<float>(static_cast<double>(ticks_) * tickSeconds_));
 }
 
 }  // namespace obscura

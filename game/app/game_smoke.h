@@ -2,7 +2,7 @@
 // grenade lies, shots carve tunnels through every volume they cross, the player pushes the smoke as
 // a moving obstacle, and the volumes step at a fixed rate inside the simulation tick (so a replay
 // gives the same smoke every run). Rendering reads the result one way: uploaded to 3D textures and
-// handed to the post-process composite, which ray-marches it against the scene depth.
+// ray-marched by the frame's volumetrics stage (smoke::SmokeRender) against the scene depth.
 #pragma once
 
 #include "core/triangle_mesh.h"
@@ -11,13 +11,12 @@
 #include "sim/sim_events.h"
 #include "sim/simulation.h"
 #include "smoke/smoke_manager.h"
-#include "smoke/smoke_textures.h"
+#include "smoke/smoke_render.h"
 
 #include <string>
 #include <vector>
 
 namespace obscura {
-namespace ssao { class AmbientOcclusion; }
 
 class GameSmoke {
 public:
@@ -29,8 +28,10 @@ public:
     // After each simulation tick: detonations spawn volumes, shots carve them; every third tick the
     // volumes step with the player, the props and the grenades pushing the smoke.
     void onTick(const std::vector<sim::SimEvent>& events, const sim::Simulation& sim);
-    // Once per rendered frame: new fields to the GPU (when the smoke stepped) and to the composite.
-    void render(ssao::AmbientOcclusion& post);
+    // Once per rendered frame: new fields to the GPU (when the smoke stepped).
+    void render();
+    // The frame's volumetrics stage that marches them.
+    frame::Technique& technique() { return render_; }
     std::size_t volumeCount() const { return manager_.volumes().size(); }
     const smoke::SmokeManager& manager() const { return manager_; }
 
@@ -40,7 +41,7 @@ private:
     Vec3 towardSun_;
     double tickSeconds_;
     smoke::SmokeManager manager_;
-    smoke::SmokeTextures textures_;
+    smoke::SmokeRender render_;
     long ticks_ = 0;
     bool dirty_ = false;  // stepped since the last upload
 };

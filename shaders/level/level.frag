@@ -1,21 +1,16 @@
 #version 330 core
-// Simple, cheap level lighting (the AO modes of later issues modulate the ambient term):
-//   hemispheric ambient (sky colour from above, ground colour from below)
-// + the sun (worldspawn _sunlight), shadowed through a shadow map, wrapped a little so faces
+// Level surfaces into the frame's G-buffer (shaders/frame/frame_shared.h): the albedo, the normal,
+// the depth and the direct light arriving here, as irradiance (linear, HDR):
+//   the sun (worldspawn _sunlight), shadowed through a shadow map, wrapped a little so faces
 //   turned away are not flat black
 // + up to 8 point lights per batch with Quake-like falloff reaching zero at the light's range.
-// Albedo is stored gamma-encoded; lighting is done in linear space and tone-mapped at the end.
-// Compiled twice (media/materials/level.program): as is for the plain view, and with
-// OBSCURA_GBUFFER for the AO modes' G-buffer scheme, where the same lighting is written untone-mapped
-// beside linear depth, view normal and the ambient term (shaders/ssao/README in engine_ext/ssao).
+// The hemispheric ambient (sky from above, ground from below), which AO darkens, is added by the
+// frame's lighting pass (shaders/frame/lighting.frag), and the tone map is applied once at the end.
 uniform sampler2D albedoMap;
 uniform sampler2D sunShadowMap;  // -height/10^4 of the caster nearest the sun (shadow_caster.frag)
 uniform vec4 sunShadowTexel;     // 1/width, 1/height, width, height of sunShadowMap
-uniform vec3 skyAmbient;      // linear RGB, light arriving from above
-uniform vec3 groundAmbient;   // linear RGB, light bounced from below
 uniform vec3 sunDirection;    // world space, unit, pointing towards the sun
 uniform vec3 sunColour;       // linear RGB
-uniform float exposure;       // multiplies the lit colour before tone mapping
 uniform float lightCount;
 uniform vec4 lightPositions[8];    // world space (OGRE light_position_array); w = 0: the sun, skipped
 uniform vec4 lightColours[8];      // OGRE light_diffuse_colour_array
@@ -26,13 +21,9 @@ in vec3 vNormal;
 in vec2 vUv;
 in vec4 vShadowPos;
 
-#ifdef OBSCURA_GBUFFER
 #include "gbuffer_out.glsl"
-// Materials without an albedo texture (the AO scheme's shared fallback) count as light grey.
+// Materials without an albedo texture (the GBuffer scheme's shared fallback) count as light grey.
 uniform float hasAlbedo;
-#else
-out vec4 fragColour;
-#endif
 
 // Fraction of the sun reaching this point: 2x2 percentage-closer filtering of the shadow map.
 float sunVisibility(float ndotl)
@@ -55,13 +46,10 @@ float sunVisibility(float ndotl)
 void main()
 {
     vec3 n = normalize(vNormal);
-    vec3 albedo = pow(texture(albedoMap, vUv).rgb, vec3(2.2));
-#ifdef OBSCURA_GBUFFER
-    if (hasAlbedo < 0.5) albedo = vec3(0.7);
-#endif
+    // 0.7 linear = 0.85 gamma-encoded: the light grey of untextured surfaces.
+    vec3 albedo = hasAlbedo < 0.5 ? vec3(pow(0.7, 1.0 / 2.2)) : texture(albedoMap, vUv).rgb;
 
-    vec3 ambient = mix(groundAmbient, skyAmbient, 0.5 + 0.5 * n.y);
-    vec3 light = ambient;
+    vec3 light = vec3(0.0);
     float ndotl = dot(n, sunDirection);
     // Wrap lighting (0.2): keeps sunlit back faces from collapsing to the ambient floor.
     float sun = max((ndotl + 0.2) / 1.2, 0.0);
@@ -80,11 +68,5 @@ void main()
         light += lightColours[i].rgb * (falloff * falloff * ndotp);
     }
 
-    vec3 colour = albedo * light * exposure;
-#ifdef OBSCURA_GBUFFER
-    writeGBuffer(colour, albedo * ambient * exposure, vWorldPos, n);
-#else
-    colour = vec3(1.0) - exp(-colour);   // exponential tone map: never clips hard
-    fragColour = vec4(pow(colour, vec3(1.0 / 2.2)), 1.0);
-#endif
+    writeGBuffer(albedo, light, vWorldPos, n);
 }

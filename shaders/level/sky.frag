@@ -1,5 +1,5 @@
 #version 330 core
-// Sky brushes: unlit, a vertical gradient from the horizon colour to the zenith colour.
+// Sky brushes: unlit, a vertical gradient from the horizon colour to the zenith colour (as shown).
 uniform vec3 skyZenith;    // gamma-encoded RGB
 uniform vec3 skyHorizon;   // gamma-encoded RGB
 uniform vec3 cameraPosition;
@@ -8,23 +8,15 @@ in vec3 vWorldPos;
 in vec3 vNormal;
 in vec2 vUv;
 
-#ifdef OBSCURA_GBUFFER
 #include "gbuffer_out.glsl"
-#else
-out vec4 fragColour;
-#endif
 
 void main()
 {
     vec3 dir = normalize(vWorldPos - cameraPosition);
     float t = clamp(dir.y * 1.5, 0.0, 1.0);
     vec3 sky = mix(skyHorizon, skyZenith, sqrt(t));
-#ifdef OBSCURA_GBUFFER
-    // Depth 0 marks "nothing here" for the AO passes; no ambient to occlude.
-    writeGBuffer(vec3(0.0), vec3(0.0), cameraPosition + dir * 1e6, -dir);
-    outColour = vec4(sky, 1.0);
+    // Depth 0 marks "nothing here": no ambient to occlude, no surface for AO or volumes to stop at.
+    // The albedo slot holds the colour as shown (the lighting pass undoes the tone map for it).
+    writeGBuffer(sky, vec3(0.0), cameraPosition + dir * 1e6, -dir);
     outDepth = vec4(0.0);
-#else
-    fragColour = vec4(sky, 1.0);
-#endif
 }

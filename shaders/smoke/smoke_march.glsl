@@ -1,16 +1,17 @@
-// Ray-marching the smoke grenades' volumes (engine_ext/smoke) in the post-process composite, where
-// the scene's linear depth is at hand: each view ray is marched from the volume's entry (or the
+// Ray-marching the smoke grenades' volumes (engine_ext/smoke) in the frame's volumetrics stage,
+// against the G-buffer's linear depth: each view ray is marched from the volume's entry (or the
 // camera, when inside it) to its exit or the first opaque surface, whichever is nearer, so walls and
 // props hide the smoke behind them. Per step: the density from the 3D texture (R, times the
 // export scale) with sub-grid value noise so the 25 cm grid never shows, Beer-Lambert extinction,
 // and in-scattered light = sky/ground ambient + the sun times the volume's own transmittance
 // towards it (G: self-shadowing). The start is jittered per pixel against banding.
 // Needs: inverseView, projScale, flipY, vUv; ObscuraLighting's sun and ambient.
-uniform float smokeCount;          // volumes bound (0..4)
-uniform vec3 smokeMin[4];          // world AABB of each volume's grid (its texture)
-uniform vec3 smokeSize[4];
-uniform vec3 smokeBoxMin[4];       // the part of it holding smoke: only this is marched
-uniform vec3 smokeBoxSize[4];
+#include "smoke_shared.h"
+uniform float smokeCount;          // volumes bound (0..SMOKE_MAX_VOLUMES)
+uniform vec3 smokeMin[SMOKE_MAX_VOLUMES];      // world AABB of each volume's grid (its texture)
+uniform vec3 smokeSize[SMOKE_MAX_VOLUMES];
+uniform vec3 smokeBoxMin[SMOKE_MAX_VOLUMES];   // the part of it holding smoke: only this is marched
+uniform vec3 smokeBoxSize[SMOKE_MAX_VOLUMES];
 uniform sampler3D smokeMap0;
 uniform sampler3D smokeMap1;
 uniform sampler3D smokeMap2;
@@ -21,7 +22,6 @@ uniform vec3 sunDirection;
 uniform vec3 sunColour;
 uniform vec3 skyAmbient;
 uniform vec3 groundAmbient;
-uniform float exposure;
 const float kSmokeSigma = 6.0;     // extinction per metre at density 1: 1 m of thick smoke passes 0.25 %
 const vec3 kSmokeAlbedo = vec3(0.82, 0.82, 0.8);  // light grey, a little warm
 const float kSmokeStep = 0.25;     // metres: the grid's cell size; finer shows no more detail
@@ -64,7 +64,7 @@ void marchSmoke(vec3 origin, vec3 dir, float maxT, float jitter, inout vec3 ligh
 {
     vec3 ambient = mix(groundAmbient, skyAmbient, 0.65);  // a cloud sees mostly sky
     int count = int(smokeCount);
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < SMOKE_MAX_VOLUMES; ++i) {
         if (i >= count) break;
         vec3 lo = smokeBoxMin[i], hi = smokeBoxMin[i] + smokeBoxSize[i];
         vec3 inv = 1.0 / (dir + vec3(equal(dir, vec3(0.0))) * 1e-6);
@@ -85,7 +85,7 @@ void marchSmoke(vec3 origin, vec3 dir, float maxT, float jitter, inout vec3 ligh
             float detail = 0.55 + 0.6 * smokeNoise(q * 1.3) + 0.3 * (smokeNoise(kNoiseTurn * q * 2.9) - 0.5);
             float density = st.r * smokeDensityScale * detail;
             float stepT = exp(-kSmokeSigma * density * dt);
-            vec3 lit = kSmokeAlbedo * (ambient + sunColour * st.g) * exposure;
+            vec3 lit = kSmokeAlbedo * (ambient + sunColour * st.g);
             light += transmittance * (1.0 - stepT) * lit;
             transmittance *= stepT;
             if (transmittance < 0.003) return;

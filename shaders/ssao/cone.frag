@@ -15,7 +15,7 @@ void main()
     vec3 rnd = pixelNoise();
     int count = int(sampleCount);
     float occ = 0.0;
-    for (int i = 0; i < 32; ++i) {
+    for (int i = 0; i < SSAO_MAX_SAMPLES; ++i) {
         if (i >= count) break;
         vec3 q = p.xyz + reflect(kernel[i], rnd) * radius;
         vec4 s = viewPosition(projectToUv(q));

@@ -13,7 +13,7 @@ void main()
     vec3 rnd = pixelNoise();
     int n = int(sampleCount);
     float occ = 0.0;
-    for (int i = 0; i < 32; ++i) {
+    for (int i = 0; i < SSAO_MAX_SAMPLES; ++i) {
         if (i >= n) break;
         vec3 s = reflect(kernel[i], rnd) * radius;
         occ += occluderAt(p.xyz + s, p.z);

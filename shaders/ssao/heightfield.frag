@@ -41,7 +41,7 @@ void main()
         float jitter = rnd.z * 0.5 + 0.5;
         float open = 0.0, total = 0.0;
         int rays = int(heightRays);
-        for (int i = 0; i < 32; ++i) {
+        for (int i = 0; i < SSAO_MAX_SAMPLES; ++i) {
             if (i >= rays) break;
             vec3 dir = normalize(kernel[i]);
             float w = dir.z;  // cosine weight: the hemisphere kernel is uniform over directions

@@ -15,7 +15,7 @@ void main()
     mat3 tbn = mat3(t, cross(n, t), n);
     int count = int(sampleCount);
     float occ = 0.0;
-    for (int i = 0; i < 32; ++i) {
+    for (int i = 0; i < SSAO_MAX_SAMPLES; ++i) {
         if (i >= count) break;
         occ += occluderAt(p.xyz + tbn * kernel[i] * radius, p.z);
     }

@@ -1,4 +1,5 @@
 // Shared by the AO modes: G-buffer access and projection between view space and texture space.
+#include "ssao_shared.h"
 uniform sampler2D gbufferDepth;   // linear depth, metres; 0 where nothing was drawn (sky)
 uniform sampler2D gbufferNormal;  // view-space normal packed to 0..1
 uniform sampler2D noiseMap;       // 4x4 random unit vectors (packed to 0..1)
@@ -6,7 +7,7 @@ uniform vec2 projScale;           // projection matrix [0][0] and [1][1]
 uniform float flipY;              // 1 when render textures are stored upside down
 uniform float radius;             // metres
 uniform float intensity;
-uniform vec3 kernel[32];
+uniform vec3 kernel[SSAO_MAX_SAMPLES];
 uniform float sampleCount;
 
 vec2 projectToUv(vec3 p)

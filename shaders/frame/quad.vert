@@ -1,5 +1,5 @@
 #version 330 core
-// Full-screen quad for the AO passes.
+// Full-screen quad for the frame's and the techniques' passes.
 uniform mat4 worldViewProj;
 in vec4 vertex;
 in vec2 uv0;

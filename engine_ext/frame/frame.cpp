@@ -1,0 +1,371 @@
+// See frame.h.
+#include "frame/frame.h"
+
+#include "frame/frame_shared.h"
+
+#include <Ogre.h>
+#include <OgreCompositorChain.h>
+#include <OgreCompositorManager.h>
+
+#include <algorithm>
+#include <iostream>
+
+namespace obscura::frame {
+
+namespace {
+// Pass identifiers of the frame's own quad passes (media/frame/frame.compositor).
+constexpr Ogre::uint32 kLightingPass = 1, kOutputPass = 2;
+const char* const kGBufferScheme = "GBuffer";
+// The split G-buffer's two schemes (Obscura/Frame/GBufferSplit) and the part each compiles.
+const char* const kPartSchemes[2] = {"GBufferA", "GBufferB"};
+// The frame's own compositors and the stage each stands for.
+struct Builtin {
+    Stage stage;
+    const char* compositor;
+};
+const Builtin kBuiltins[] = {{Stage::GBuffer, "Obscura/Frame/GBuffer"},
+                             {Stage::Lighting, "Obscura/Frame/Lighting"},
+                             {Stage::Output, "Obscura/Frame/Output"}};
+const char* const kSplitGBuffer = "Obscura/Frame/GBufferSplit";
+
+Ogre::TexturePtr constantTexture(const std::string& name, Ogre::PixelFormat format, const float* texel) {
+    Ogre::Image image;
+    image.loadDynamicImage(reinterpret_cast<Ogre::uchar*>(const_cast<float*>(texel)), 1, 1, 1, format);
+    return Ogre::TextureManager::getSingleton().loadImage(name, Ogre::RGN_DEFAULT, image, Ogre::TEX_TYPE_2D, 0);
+}
+}  // namespace
+
+const char* stageName(Stage s) {
+    switch (s) {
+        case Stage::GBuffer: return "G-buffer";
+        case Stage::Decals: return "decals";
+        case Stage::AO: return "AO";
+        case Stage::Lighting: return "lighting";
+        case Stage::Volumetrics: return "volumetrics";
+        case Stage::Output: return "output";
+    }
+    return "?";
+}
+
+bool Gpu::renderTargetFormat(Ogre::PixelFormat f, bool volume) const {
+    const std::string name = (volume ? "3d:" : "") + Ogre::PixelUtil::getFormatName(f);
+    if (std::find(unsupportedFormats.begin(), unsupportedFormats.end(), name) != unsupportedFormats.end()) return false;
+    return Ogre::TextureManager::getSingleton().isFormatSupported(volume ? Ogre::TEX_TYPE_3D : Ogre::TEX_TYPE_2D, f,
+                                                                  Ogre::TU_RENDERTARGET);
+}
+
+bool Uniforms::check(const char* name) {
+    if (!missing_) return true;
+    if (!params_._findNamedConstantDefinition(name)) missing_->push_back(name);
+    return false;
+}
+
+// One compositor of the chain: the frame's own (technique == nullptr) or a technique's.
+struct Frame::Entry {
+    Stage stage;
+    std::string compositor;
+    Technique* technique = nullptr;
+    Ogre::CompositorInstance* instance = nullptr;
+    std::unique_ptr<Binder> binder;
+    std::vector<std::string> missing;  // "material: uniform" its programs lack (found at setup)
+};
+
+class Frame::Binder : public Ogre::CompositorInstance::Listener {
+public:
+    Binder(Frame& frame, Entry& entry) : frame_(frame), entry_(entry) {}
+    void notifyMaterialSetup(Ogre::uint32 passId, Ogre::MaterialPtr& mat) override { frame_.setupPass(entry_, passId, *mat); }
+    void notifyMaterialRender(Ogre::uint32 passId, Ogre::MaterialPtr& mat) override { frame_.renderPass(entry_, passId, *mat); }
+
+private:
+    Frame& frame_;
+    Entry& entry_;
+};
+
+Frame::Frame(Ogre::Viewport& viewport, Ogre::Camera& camera, FrameSettings settings)
+    : viewport_(viewport), camera_(camera), settings_(std::move(settings)) {
+    const Ogre::RenderSystemCapabilities* caps = Ogre::Root::getSingleton().getRenderSystem()->getCapabilities();
+    gpu_.renderTargets = caps ? caps->getNumMultiRenderTargets() : 1;
+    if (settings_.maxRenderTargets > 0) gpu_.renderTargets = std::min(gpu_.renderTargets, settings_.maxRenderTargets);
+    gpu_.unsupportedFormats = settings_.unsupportedFormats;
+    // The frame itself cannot be turned off: without these there is no picture to draw into.
+    if (gpu_.renderTargets < 2)
+        throw std::runtime_error("frame: the G-buffer needs 2 simultaneous render targets (4 to draw the scene once) "
+                                 "and this GPU has " + std::to_string(gpu_.renderTargets));
+    split_ = gpu_.renderTargets < FRAME_GBUFFER_TARGETS;
+    if (split_)
+        std::cerr << "obscura: frame: the G-buffer is drawn in two passes (this GPU has " << gpu_.renderTargets
+                  << " simultaneous render targets, one pass needs " << FRAME_GBUFFER_TARGETS << ")\n";
+    for (Ogre::PixelFormat f : {Ogre::PF_A8B8G8R8, Ogre::PF_FLOAT32_R, Ogre::PF_FLOAT16_RGBA})
+        if (!gpu_.renderTargetFormat(f))
+            throw std::runtime_error("frame: the G-buffer needs render targets in " + Ogre::PixelUtil::getFormatName(f) +
+                                     ", which this GPU lacks");
+
+    auto& mm = Ogre::MaterialManager::getSingleton();
+    gbufferFallback_ = mm.getByName("Obscura/Level/GBufferFallback");  // a light-grey level surface
+    if (!gbufferFallback_) throw std::runtime_error("material Obscura/Level/GBufferFallback (media/materials/level.material) is missing");
+    gbufferFallback_->load();
+    mm.addListener(this, kGBufferScheme);
+    for (const char* scheme : kPartSchemes) mm.addListener(this, scheme);
+
+    const float open[2] = {1, 0};         // AO 1 (nothing occluded), depth 0
+    const float clear[4] = {0, 0, 0, 1};  // no light, transmittance 1
+    noAo_ = constantTexture("Obscura/Frame/NoAO", Ogre::PF_FLOAT32_GR, open);
+    noVolume_ = constantTexture("Obscura/Frame/NoVolume", Ogre::PF_FLOAT32_RGBA, clear);
+    context_.camera = &camera_;
+}
+
+Frame::~Frame() {
+    removeAll();
+    auto& mm = Ogre::MaterialManager::getSingleton();
+    mm.removeListener(this, kGBufferScheme);
+    for (const char* scheme : kPartSchemes) mm.removeListener(this, scheme);
+    gbufferFallback_.reset();
+    published_.clear();
+    Ogre::TextureManager::getSingleton().remove(noAo_);
+    Ogre::TextureManager::getSingleton().remove(noVolume_);
+}
+
+void Frame::add(Technique& technique) {
+    techniques_.push_back(&technique);
+    builtKey_.clear();
+}
+
+void Frame::remove(Technique& technique) {
+    techniques_.erase(std::remove(techniques_.begin(), techniques_.end(), &technique), techniques_.end());
+    off_.erase(&technique);
+    removeAll();
+}
+
+std::string Frame::key() const {
+    std::string k;
+    for (const Technique* t : techniques_) k += t->compositor() + "|" + t->configuration() + ";";
+    return k;
+}
+
+bool Frame::running(const Technique& technique) const {
+    for (const auto& e : chain_)
+        if (e->technique == &technique) return true;
+    return false;
+}
+
+std::string Frame::offReason(const Technique& technique) const {
+    auto it = off_.find(&technique);
+    return it != off_.end() && it->second.first == technique.compositor() + "|" + technique.configuration()
+               ? it->second.second
+               : std::string();
+}
+
+void Frame::turnOff(const Technique& t, const std::string& reason) {
+    const std::string line = std::string("frame: the ") + stageName(t.stage()) + " stage (" + t.folder() + ") is off: " + reason;
+    off_[&t] = {t.compositor() + "|" + t.configuration(), line};
+    std::cerr << "obscura: " << line << "\n";
+    Ogre::LogManager::getSingleton().logError(line);
+}
+
+// The chain in stage order: the frame's own compositors and every technique that runs now.
+std::vector<std::unique_ptr<Frame::Entry>> Frame::plan() const {
+    std::vector<std::unique_ptr<Entry>> p;
+    for (const Builtin& b : kBuiltins)
+        p.push_back(std::make_unique<Entry>(Entry{b.stage, split_ && b.stage == Stage::GBuffer ? kSplitGBuffer : b.compositor}));
+    for (Technique* t : techniques_) {
+        if (t->compositor().empty() || !offReason(*t).empty()) continue;
+        p.push_back(std::make_unique<Entry>(Entry{t->stage(), t->compositor(), t}));
+    }
+    // Stable: the frame's own pass of a stage comes before techniques of that stage, techniques in
+    // the order they were added.
+    std::stable_sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a->stage < b->stage; });
+    return p;
+}
+
+void Frame::update(float time) {
+    context_.time = time;
+    if (key() != builtKey_) rebuild();
+}
+
+void Frame::removeAll() {
+    auto& cm = Ogre::CompositorManager::getSingleton();
+    for (auto& e : chain_)
+        if (e->instance) {
+            e->instance->removeListener(e->binder.get());
+            cm.removeCompositor(&viewport_, e->compositor);
+        }
+    chain_.clear();
+    builtKey_.clear();
+}
+
+bool Frame::instance(Entry& e) {
+    auto& cm = Ogre::CompositorManager::getSingleton();
+    Ogre::CompositorPtr comp = cm.getByName(e.compositor, Ogre::RGN_DEFAULT);
+    if (!comp) {
+        if (!e.technique) throw std::runtime_error("frame: compositor " + e.compositor + " (media/frame/frame.compositor) is missing");
+        turnOff(*e.technique, "its compositor " + e.compositor + " is not defined");
+        return false;
+    }
+    if (e.technique) {
+        const std::string missing = e.technique->missingFeature(gpu_);
+        if (!missing.empty()) {
+            turnOff(*e.technique, "it needs " + missing);
+            return false;
+        }
+        comp->load();
+        for (size_t i = 0; i < comp->getNumTechniques(); ++i) e.technique->configure(*comp->getTechnique(i));
+    }
+    e.instance = cm.addCompositor(&viewport_, e.compositor);
+    if (!e.instance || !e.instance->getTechnique()) {
+        const std::string why = "compositor " + e.compositor + " cannot run here (see the OGRE log)";
+        if (e.instance) cm.removeCompositor(&viewport_, e.compositor);
+        e.instance = nullptr;
+        if (!e.technique) throw std::runtime_error("frame: " + why);
+        turnOff(*e.technique, why);
+        return false;
+    }
+    e.binder = std::make_unique<Binder>(*this, e);
+    e.instance->addListener(e.binder.get());
+    e.instance->setEnabled(true);
+    return true;
+}
+
+// What later passes read by texture-unit name: the G-buffer, the light, and each technique's output.
+void Frame::publish() {
+    published_.clear();
+    published_["aoMap"] = noAo_;
+    published_["volumeMap"] = noVolume_;
+    for (auto& e : chain_) {
+        if (e->stage == Stage::GBuffer && !e->technique) {
+            // One 4-target texture, or the split's two 2-target ones (frame.compositor).
+            auto target = [&](int slot) {
+                if (!split_) return e->instance->getTextureInstance("gbuffer", slot);
+                return e->instance->getTextureInstance(slot < 2 ? "gbufferA" : "gbufferB", slot % 2);
+            };
+            published_["gbufferAlbedo"] = target(FRAME_GBUFFER_ALBEDO);
+            published_["gbufferNormal"] = target(FRAME_GBUFFER_NORMAL);
+            published_["gbufferDepth"] = target(FRAME_GBUFFER_DEPTH);
+            published_["gbufferLight"] = target(FRAME_GBUFFER_LIGHT);
+            context_.flipY = e->instance->getRenderTarget(split_ ? "gbufferA" : "gbuffer")->requiresTextureFlipping();
+        } else if (e->stage == Stage::Lighting && !e->technique) {
+            published_["litMap"] = e->instance->getTextureInstance("lit", 0);
+        } else if (e->technique) {
+            const Technique::Output out = e->technique->output();
+            if (!out.texture.empty()) published_[out.unit] = e->instance->getTextureInstance(out.texture, 0);
+        }
+    }
+}
+
+void Frame::rebuild() {
+    for (;;) {
+        removeAll();
+        const std::string k = key();
+        chain_ = plan();
+        bool complete = true;
+        for (auto& e : chain_) complete = instance(*e) && complete;
+        if (!complete) continue;  // a technique was turned off: plan again without it
+        publish();
+        // Compile now, outside any render: every quad pass is set up (textures bound, uniform names
+        // checked) here rather than inside the first frame.
+        Ogre::CompositorManager::getSingleton().getCompositorChain(&viewport_)->_compile();
+        bool checked = true;
+        for (auto& e : chain_) {
+            if (e->missing.empty()) continue;
+            std::string list;
+            for (const auto& m : e->missing) list += (list.empty() ? "" : ", ") + m;
+            if (!e->technique) throw std::runtime_error("frame: " + e->compositor + ": the program lacks uniforms " + list);
+            turnOff(*e->technique, "its program does not declare the uniform(s) the C++ sets: " + list);
+            checked = false;
+        }
+        if (!checked) continue;
+        builtKey_ = k;
+        return;
+    }
+}
+
+void Frame::setupPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat) {
+    Ogre::Pass* pass = mat.getTechnique(0)->getPass(0);
+    for (unsigned short i = 0; i < pass->getNumTextureUnitStates(); ++i) {
+        Ogre::TextureUnitState* unit = pass->getTextureUnitState(i);
+        if (auto it = published_.find(unit->getName()); it != published_.end()) unit->setTexture(it->second);
+    }
+    if (e.technique) e.technique->setup(passId, *pass);
+    if (!pass->hasFragmentProgram()) return;
+    mat.load();
+    std::vector<std::string> missing;
+    Uniforms check(*pass->getFragmentProgramParameters(), &missing);
+    bind(e, passId, *pass, check);
+    // The compositor's copy is named "c<N>/" + the script's name: say the script's name.
+    std::string name = mat.getName();
+    if (name.size() > 1 && name[0] == 'c' && std::isdigit(static_cast<unsigned char>(name[1])) && name.find('/') != std::string::npos)
+        name = name.substr(name.find('/') + 1);
+    for (const auto& m : missing) e.missing.push_back("material " + name + " has no parameter '" + m + "'");
+}
+
+void Frame::renderPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat) {
+    Ogre::Pass* pass = mat.getBestTechnique()->getPass(0);
+    if (!pass->hasFragmentProgram()) return;
+    Uniforms set(*pass->getFragmentProgramParameters(), nullptr);
+    bind(e, passId, *pass, set);
+}
+
+void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
+    if (e.technique) return e.technique->bind(passId, pass, u, context_);
+    if (passId == kLightingPass) {
+        u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
+    } else if (passId == kOutputPass) {
+        u.set("exposure", settings_.exposure);
+        u.set("view", static_cast<float>(view_ == View::AO ? 1 : 0));
+        u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
+        u.set("volumePresent", published_["volumeMap"] != noVolume_ ? 1.0f : 0.0f);
+    }
+}
+
+// The GBuffer technique of `material` (or the fallback's): getTechnique, not getBestTechnique,
+// which would ask this listener again.
+static Ogre::Technique* gbufferTechnique(Ogre::Material& material, Ogre::Material& fallback) {
+    for (Ogre::Technique* t : material.getTechniques())
+        if (t->getSchemeName() == kGBufferScheme) return t;
+    return fallback.getTechnique(0);
+}
+
+Ogre::Technique* Frame::handleSchemeNotFound(unsigned short, const Ogre::String& schemeName, Ogre::Material* material,
+                                             unsigned short, const Ogre::Renderable*) {
+    if (schemeName == kGBufferScheme) return gbufferFallback_->getTechnique(0);
+    const int part = schemeName == kPartSchemes[0] ? 0 : schemeName == kPartSchemes[1] ? 1 : -1;
+    if (part < 0 || !material) return nullptr;
+    // Both halves join the material itself, so OGRE finds them from now on without asking.
+    Ogre::Technique& gbuffer = *gbufferTechnique(*material, *gbufferFallback_);
+    Ogre::Technique* halves[2] = {addPart(*material, gbuffer, 0), addPart(*material, gbuffer, 1)};
+    material->compile();
+    return halves[part];
+}
+
+// A copy of a GBuffer technique that writes one half of the G-buffer, added to `material`: its
+// fragment program, when it writes the G-buffer (includes gbuffer_out.glsl), compiled again with
+// FRAME_GBUFFER_PART; anything else (the shadow caster's) as it is.
+Ogre::Technique* Frame::addPart(Ogre::Material& material, const Ogre::Technique& gbuffer, int part) {
+    Ogre::Technique* t = material.createTechnique();
+    *t = gbuffer;
+    t->setSchemeName(kPartSchemes[part]);
+    for (Ogre::Pass* pass : t->getPasses()) {
+        if (!pass->hasFragmentProgram()) continue;
+        const Ogre::GpuProgramPtr& fp = pass->getFragmentProgram();
+        // (OGRE inlines #include at load: look for what gbuffer_out.glsl defines.)
+        if (fp->getSource().find("void writeGBuffer(") == std::string::npos) continue;
+        const std::string name = fp->getName() + "/" + kPartSchemes[part];
+        auto& gm = Ogre::HighLevelGpuProgramManager::getSingleton();
+        Ogre::HighLevelGpuProgramPtr variant = gm.getByName(name, fp->getGroup());
+        if (!variant) {
+            variant = gm.createProgram(name, fp->getGroup(), "glsl", Ogre::GPT_FRAGMENT_PROGRAM);
+            variant->setSourceFile(fp->getSourceFile());
+            variant->setParameter("preprocessor_defines", "FRAME_GBUFFER_PART=" + std::to_string(part));
+            variant->load();
+            Ogre::GpuProgramParametersSharedPtr defaults = variant->getDefaultParameters();
+            defaults->copyMatchingNamedConstantsFrom(*fp->getDefaultParameters());
+            for (const auto& shared : fp->getDefaultParameters()->getSharedParameters())
+                defaults->addSharedParameters(shared.getName());
+        }
+        const Ogre::GpuProgramParametersSharedPtr old = pass->getFragmentProgramParameters();
+        pass->setFragmentProgram(name);
+        pass->getFragmentProgramParameters()->copyMatchingNamedConstantsFrom(*old);
+    }
+    return t;
+}
+
+}  // namespace obscura::frame

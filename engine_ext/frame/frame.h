@@ -1,0 +1,101 @@
+// The frame as a list of passes (Quake III's CG_DrawActiveFrame in spirit). Its order is written
+// once, in media/frame/frame.compositor and in Frame::plan():
+//   shadow maps (OGRE texture shadows, drawn by the G-buffer's scene pass)
+//   -> G-buffer (the scene once, unlit: frame_shared.h)  -> decals  -> AO
+//   -> lighting (albedo x (direct + ambient x AO), HDR) and the effects queue added into it
+//   -> volumetrics (smoke)  -> output (volumes over the light, exposure, one tone map)  -> HUD
+// Techniques (technique.h) are added by the game and sit where their stage says; the frame binds
+// what they publish (aoMap, volumeMap) and what it owns (gbufferAlbedo, gbufferNormal,
+// gbufferDepth, gbufferLight, litMap) to any texture unit of that name in any pass. A technique
+// that cannot run here (a GPU feature missing, a uniform its program lacks) is turned off with one
+// stderr line naming it, and the rest of the frame goes on.
+#pragma once
+
+#include "frame/technique.h"
+
+#include <OgreMaterialManager.h>
+#include <OgreRenderQueue.h>
+#include <OgreTexture.h>
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace Ogre {
+class Viewport;
+}
+
+namespace obscura::frame {
+
+// Additive effects (muzzle flash, sparks) are in this queue: drawn into the HDR light after the
+// lighting pass; the G-buffer's scene pass stops before it.
+constexpr Ogre::uint8 kEffectsQueue = Ogre::RENDER_QUEUE_8;
+
+struct FrameSettings {
+    int maxRenderTargets = 0;                     // pretend the GPU has at most this many; 0: its own
+    std::vector<std::string> unsupportedFormats;  // pretend these render-target formats are missing
+    float exposure = 1.6f;
+};
+
+enum class View { Scene, AO };  // what the output shows (FRAME_VIEW_* in shaders/frame/output.frag)
+
+class Frame : public Ogre::MaterialManager::Listener {
+public:
+    Frame(Ogre::Viewport& viewport, Ogre::Camera& camera, FrameSettings settings);
+    ~Frame() override;
+    Frame(const Frame&) = delete;
+    Frame& operator=(const Frame&) = delete;
+
+    // A technique the game made (not owned; it must outlive the frame or be removed).
+    void add(Technique& technique);
+    void remove(Technique& technique);
+    void setExposure(float exposure) { settings_.exposure = exposure; }
+    void setView(View v) { view_ = v; }
+    View view() const { return view_; }
+    // Rebuilds the chain when a technique's compositor or configuration changed. Call once a
+    // frame before rendering (never from inside a render).
+    void update(float time);
+    // Whether the technique is in the frame now (false when its stage was turned off here).
+    bool running(const Technique& technique) const;
+    // The reason it was turned off, empty if it runs.
+    std::string offReason(const Technique& technique) const;
+
+    // Ogre::MaterialManager::Listener: the G-buffer fallback for materials without a GBuffer technique.
+    Ogre::Technique* handleSchemeNotFound(unsigned short schemeIndex, const Ogre::String& schemeName,
+                                          Ogre::Material* originalMaterial, unsigned short lodIndex,
+                                          const Ogre::Renderable* rend) override;
+
+private:
+    struct Entry;
+    class Binder;
+    std::vector<std::unique_ptr<Entry>> plan() const;
+    std::string key() const;
+    void rebuild();
+    void removeAll();
+    bool instance(Entry& e);
+    void publish();
+    void turnOff(const Technique& t, const std::string& reason);
+    void setupPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat);
+    void renderPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat);
+    void bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u);
+
+    Ogre::Viewport& viewport_;
+    Ogre::Camera& camera_;
+    FrameSettings settings_;
+    Gpu gpu_;
+    View view_ = View::Scene;
+    std::vector<Technique*> techniques_;
+    std::vector<std::unique_ptr<Entry>> chain_;
+    std::string builtKey_;
+    std::map<const Technique*, std::pair<std::string, std::string>> off_;  // configuration key -> reason
+    std::map<std::string, Ogre::TexturePtr> published_;  // texture-unit name -> texture
+    Ogre::TexturePtr noAo_, noVolume_;  // bound while no AO / no volumes run
+    Ogre::MaterialPtr gbufferFallback_;
+    bool split_ = false;  // the G-buffer in two passes (fewer than FRAME_GBUFFER_TARGETS targets)
+    Ogre::Technique* addPart(Ogre::Material& material, const Ogre::Technique& gbuffer, int part);
+    FrameContext context_;
+};
+
+}  // namespace obscura::frame

@@ -1,0 +1,36 @@
+// What the frame's C++ (engine_ext/frame) and its GLSL (shaders/frame, and every technique's
+// shaders that read the G-buffer) agree on, in one place: plain #defines valid in both languages.
+// Included by C++ as "frame/frame_shared.h" (shaders/ is on the include path) and by GLSL as
+// "frame_shared.h" (shaders/frame is an OGRE resource location).
+#ifndef OBSCURA_FRAME_SHARED_H
+#define OBSCURA_FRAME_SHARED_H
+
+// The G-buffer, written by every opaque material in the GBuffer scheme (gbuffer_out.glsl):
+//   FRAME_GBUFFER_ALBEDO  A8B8G8R8   albedo as its texture stores it (gamma 2.2), a unused
+//   FRAME_GBUFFER_NORMAL  A8B8G8R8   view-space normal packed to 0..1; a = how much of the sky
+//                                    hemisphere the normal faces (0.5 + 0.5 world n.y)
+//   FRAME_GBUFFER_DEPTH   FLOAT32_R  linear view depth in metres, 0 = nothing drawn (sky)
+//   FRAME_GBUFFER_LIGHT   FLOAT16_RGBA direct irradiance (sun with its shadow, point lights), HDR
+// 20 bytes a pixel. Light is irradiance, not radiance: the lighting pass multiplies it by the
+// albedo, so a decal that changes the albedo changes what the light makes of it.
+#define FRAME_GBUFFER_ALBEDO 0
+#define FRAME_GBUFFER_NORMAL 1
+#define FRAME_GBUFFER_DEPTH 2
+#define FRAME_GBUFFER_LIGHT 3
+#define FRAME_GBUFFER_TARGETS 4
+
+// How fast a neighbour stops counting as the same surface in the depth-aware filters (AO blur, AO
+// and volume upsampling): weight exp(-dz/z * 50), so a tap 2 % deeper keeps 37 % of its weight and
+// one 10 % deeper 0.7 % (sharp: the AO buffer is at a quarter of the resolution, and a soft edge
+// there shows as a halo round every silhouette).
+#define FRAME_DEPTH_SHARPNESS 50.0
+// Relative depth within which one bilinear tap of an upsampled buffer is taken as is (no
+// silhouette among its four texels): 2 cm at 1 m, 20 cm at 10 m.
+#define FRAME_SAME_SURFACE 0.02
+
+// Resolutions of the frame's own buffers that techniques' passes read: the volumetrics' light and
+// transmittance are marched at half the width and height (a full-resolution march cost ~4x on
+// llvmpipe for no visible gain on smooth smoke).
+#define FRAME_VOLUME_SCALE 0.5
+
+#endif

@@ -1,0 +1,38 @@
+#version 330 core
+// The frame's lighting pass: the light each visible surface sends to the eye, linear and HDR, into
+// the float target `lit`:  albedo x (direct light + hemispheric ambient x AO).
+// The direct light (sun with its shadow, point lights) arrives as irradiance in the G-buffer; AO
+// darkens the ambient term only. Sky pixels (depth 0) keep their colour as shown: the tone map is
+// undone for them here, so the output pass shows them unchanged.
+#include "frame_shared.h"
+#include "upsample.glsl"
+uniform sampler2D gbufferAlbedo;
+uniform sampler2D gbufferNormal;
+uniform sampler2D gbufferDepth;
+uniform sampler2D gbufferLight;
+uniform sampler2D aoMap;        // (AO, depth) at the AO's resolution (engine_ext/ssao), or 1x1 open
+uniform float aoPresent;        // 0: no AO stage runs, AO is 1 everywhere
+uniform vec3 skyAmbient;        // linear RGB, light arriving from above (ObscuraLighting)
+uniform vec3 groundAmbient;     // linear RGB, light bounced from below
+uniform float exposure;         // the output's, to undo the tone map for the sky
+in vec2 vUv;
+out vec4 fragColour;
+
+void main()
+{
+    // From the quad's uv, not gl_FragCoord: the viewport may be a window while the G-buffer is a
+    // render texture stored upside down, and the uv accounts for that.
+    ivec2 size = textureSize(gbufferDepth, 0);
+    ivec2 pixel = clamp(ivec2(vUv * vec2(size)), ivec2(0), size - 1);
+    float depth = texelFetch(gbufferDepth, pixel, 0).r;
+    vec3 albedo = pow(texelFetch(gbufferAlbedo, pixel, 0).rgb, vec3(2.2));
+    if (depth <= 0.0) {
+        // 1/1024: white stays finite when undone (1 - exp(-x) reaches 1 - 1/1024 at x = 6.9).
+        fragColour = vec4(-log(max(vec3(1.0) - albedo, vec3(1.0 / 1024.0))) / exposure, 1.0);
+        return;
+    }
+    float ao = aoPresent > 0.5 ? upsampledAo(aoMap, vUv, depth) : 1.0;
+    vec3 ambient = mix(groundAmbient, skyAmbient, texelFetch(gbufferNormal, pixel, 0).a);
+    vec3 direct = texelFetch(gbufferLight, pixel, 0).rgb;
+    fragColour = vec4(albedo * (direct + ambient * ao), 1.0);
+}

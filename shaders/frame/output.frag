@@ -1,0 +1,33 @@
+#version 330 core
+// The frame's output pass: the volumes (smoke) over the light, the exposure, and the one tone map
+// of the frame (exponential: never clips hard), gamma 2.2 for the display. Or the AO alone.
+#include "frame_shared.h"
+#include "upsample.glsl"
+uniform sampler2D litMap;        // HDR light (lighting pass and effects)
+uniform sampler2D volumeMap;     // rgb in-scattered light (HDR), a transmittance, at FRAME_VOLUME_SCALE
+uniform sampler2D gbufferDepth;
+uniform sampler2D aoMap;
+uniform float exposure;
+uniform float view;              // frame::View: 0 the scene, 1 the AO alone
+uniform float aoPresent;
+uniform float volumePresent;     // 0: no volumes this frame, volumeMap is not read
+in vec2 vUv;
+out vec4 fragColour;
+
+void main()
+{
+    ivec2 size = textureSize(gbufferDepth, 0);
+    ivec2 pixel = clamp(ivec2(vUv * vec2(size)), ivec2(0), size - 1);
+    float depth = texelFetch(gbufferDepth, pixel, 0).r;
+    if (view > 0.5) {
+        float ao = depth > 0.0 && aoPresent > 0.5 ? upsampledAo(aoMap, vUv, depth) : 1.0;
+        fragColour = vec4(vec3(ao), 1.0);
+        return;
+    }
+    vec3 light = texelFetch(litMap, pixel, 0).rgb;
+    if (volumePresent > 0.5) {
+        vec4 volume = upsampledVolume(volumeMap, gbufferDepth, vUv, depth);
+        light = light * volume.a + volume.rgb;
+    }
+    fragColour = vec4(pow(vec3(1.0) - exp(-light * exposure), vec3(1.0 / 2.2)), 1.0);
+}

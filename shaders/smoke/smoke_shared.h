@@ -1,0 +1,10 @@
+// Limits the smoke's C++ glue (engine_ext/smoke/smoke_render.cpp) and its GLSL (shaders/smoke)
+// share: plain #defines valid in both.
+#ifndef OBSCURA_SMOKE_SHARED_H
+#define OBSCURA_SMOKE_SHARED_H
+
+// Volumes marched in one frame: the march's smokeMap0..3 samplers (samplers cannot be indexed by
+// a loop variable in GLSL 3.30). With more clouds alive, the 4 oldest are marched.
+#define SMOKE_MAX_VOLUMES 4
+
+#endif
