@@ -10,19 +10,26 @@ constexpr double kRadiansPerCount = 0.022 * 3.14159265358979323846 / 180.0;
 
 void InputState::press(const std::string& key) {
     if (!down_.insert(key).second) return;  // auto-repeat: only the first press triggers
+    latched_.insert(key);
+    const bool shift = isKeyDown("lshift") || isKeyDown("rshift");
     for (const auto& [action, bound] : settings_.bindings)
-        if (bound == key) triggered_.push_back(action);
+        if (bound == key) triggered_.push_back({action, shift});
 }
 
 void InputState::release(const std::string& key) { down_.erase(key); }
 
-bool InputState::isDown(Action a) const {
-    const auto it = settings_.bindings.find(a);
-    return it != settings_.bindings.end() && down_.count(it->second) != 0;
+void InputState::releaseAll() {
+    down_.clear();
+    latched_.clear();
 }
 
-std::vector<Action> InputState::takeTriggered() {
-    std::vector<Action> t;
+bool InputState::isDown(Action a) const {
+    const auto it = settings_.bindings.find(a);
+    return it != settings_.bindings.end() && (down_.count(it->second) != 0 || latched_.count(it->second) != 0);
+}
+
+std::vector<TriggeredAction> InputState::takeTriggered() {
+    std::vector<TriggeredAction> t;
     t.swap(triggered_);
     return t;
 }
@@ -42,6 +49,7 @@ sim::PlayerCommand InputState::takeCommand() {
     c.yawDelta = static_cast<float>(-static_cast<double>(mouseDx_) * k);
     c.pitchDelta = static_cast<float>(static_cast<double>(settings_.invertMouse ? mouseDy_ : -mouseDy_) * k);
     mouseDx_ = mouseDy_ = 0;
+    latched_.clear();
     return c;
 }
 

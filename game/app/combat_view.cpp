@@ -14,16 +14,14 @@
 namespace obscura {
 
 namespace {
-constexpr double kTickSeconds = 1.0 / 60.0;  // effects age per tick; their look is tuned at 60 Hz
 constexpr int kSparksPerImpact = 7;          // enough to read as a burst, few enough to stay cheap
-constexpr int kSparkTicks = 12;              // 0.2 s: a spark is a flash, not a firework
-constexpr int kFlashTicks = 2;               // the muzzle flash shows for two ticks of a shot
 constexpr double kGravity = 9.81;            // sparks fall like anything else
 const Ogre::Vector3 kMuzzle(0.14f, -0.12f, -0.75f);  // camera space: down and right of the eye, where a rifle's muzzle is
 }  // namespace
 
-CombatView::CombatView(Ogre::SceneManager& scene, render::LevelMaterials& materials, Ogre::SceneNode& cameraNode)
-    : scene_(scene), materials_(materials) {
+CombatView::CombatView(Ogre::SceneManager& scene, render::LevelMaterials& materials, Ogre::SceneNode& cameraNode,
+                       const TickDurations& durations)
+    : scene_(scene), durations_(durations), materials_(materials) {
     flash_ = scene_.createBillboardSet(4);
     flash_->setMaterialName("Obscura/Effects/Glow");
     flash_->setDefaultDimensions(0.35f, 0.35f);
@@ -55,16 +53,17 @@ CombatView::~CombatView() {
 
 void CombatView::onTick(const std::vector<sim::SimEvent>& events) {
     if (flashTicks_ > 0) --flashTicks_;
+    const double dt = durations_.tickSeconds;
     for (auto& s : live_) {
-        s.velocity.y -= kGravity * kTickSeconds;
-        s.position += s.velocity * kTickSeconds;
+        s.velocity.y -= kGravity * dt;
+        s.position += s.velocity * dt;
         --s.ticksLeft;
     }
     live_.erase(std::remove_if(live_.begin(), live_.end(), [](const Spark& s) { return s.ticksLeft <= 0; }), live_.end());
 
     for (const auto& e : events) {
         if (e.type == sim::SimEventType::Shot) {
-            flashTicks_ = kFlashTicks;
+            flashTicks_ = durations_.muzzleFlashTicks;
             flash_->clear();
             // Two overlapping glows of random size and brightness: no two flashes alike.
             flash_->createBillboard(Ogre::Vector3::ZERO, Ogre::ColourValue(1.0f, 0.75f, 0.4f, static_cast<float>(rng_.uniform(0.7, 1.0))))
@@ -76,7 +75,7 @@ void CombatView::onTick(const std::vector<sim::SimEvent>& events) {
             for (int i = 0; i < kSparksPerImpact; ++i) {
                 const Vec3 random{rng_.uniform(-1, 1), rng_.uniform(-1, 1), rng_.uniform(-1, 1)};
                 Vec3 dir = normalize(e.normal * 1.2 + random * 0.8 - e.direction * 0.3);
-                live_.push_back({e.position + e.normal * 0.02, dir * rng_.uniform(2.0, 5.0), kSparkTicks, kSparkTicks});
+                live_.push_back({e.position + e.normal * 0.02, dir * rng_.uniform(2.0, 5.0), durations_.sparkTicks, durations_.sparkTicks});
             }
         }
     }

@@ -1,13 +1,14 @@
 // What combat looks like: the targets (a bullseye board on a post that falls back when shot and
 // rises again), the muzzle flash and impact sparks (additive billboards), all driven one way from
-// the simulation's state and events. Effects advance per simulation tick, with their own seeded
-// RNG, so replays capture the same pixels every run.
+// the simulation's state and events. Effects advance per simulation tick (lifetimes in seconds,
+// tick_durations.h), with their own seeded RNG, so replays capture the same pixels every run.
 #pragma once
 
 #include "core/rng.h"
 #include "core/vec3.h"
 #include "sim/sim_events.h"
 #include "sim/simulation.h"
+#include "tick_durations.h"
 
 #include <vector>
 
@@ -23,7 +24,9 @@ namespace render { class LevelMaterials; }
 
 class CombatView {
 public:
-    CombatView(Ogre::SceneManager& scene, render::LevelMaterials& materials, Ogre::SceneNode& cameraNode);
+    // Effects age by ticks of `durations.tickSeconds`; their lifetimes are set in seconds.
+    CombatView(Ogre::SceneManager& scene, render::LevelMaterials& materials, Ogre::SceneNode& cameraNode,
+               const TickDurations& durations);
     ~CombatView();
     CombatView(const CombatView&) = delete;
     CombatView& operator=(const CombatView&) = delete;
@@ -47,6 +50,7 @@ private:
     void rebuildBillboards();
 
     Ogre::SceneManager& scene_;
+    TickDurations durations_;
     render::LevelMaterials& materials_;
     Ogre::SceneNode* flashNode_ = nullptr;  // at the muzzle, a child of the camera
     Ogre::BillboardSet* flash_ = nullptr;

@@ -1,10 +1,13 @@
-// The game's OGRE/SDL glue (through OgreBites): window or headless render target, resources,
-// RTSS, level rendering, HUD, input, and the fixed-tick main loop. The game owns the simulation
-// and pushes its state to rendering one way; nothing here feeds render state back into it.
+// The game: OgreBites' application context (window or hidden window, resources, RTSS), the
+// window's input, and the pieces it wires together one way: the Session (level, simulation,
+// smoke; plain C++) advanced tick by tick from the input, the RenderView, sound, the pause menu
+// and the debug panel reading it. Every run mode goes through the one frame loop
+// (app/run_driver.h) with its own driver; nothing feeds render state back into the simulation.
 #pragma once
 
+#include "app/replay_driver.h"
+#include "app/run_driver.h"
 #include "input.h"
-#include "replay_player.h"
 #include "settings.h"
 
 #include <OgreApplicationContext.h>
@@ -14,32 +17,25 @@
 #include <string>
 
 namespace OgreBites { struct ImGuiInputListener; }
-namespace Ogre {
-class Camera;
-class RenderTexture;
-class SceneManager;
-class SceneNode;
-class Viewport;
-}  // namespace Ogre
 
 namespace obscura {
-namespace map { struct Level; }
-namespace sim { class Simulation; struct PlayerState; }
-namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; }
 namespace replay { struct Script; class Recorder; }
-namespace ssao { class AmbientOcclusion; }
-namespace frame { class Frame; }
-class CombatView;
+class DebugPanel;
 class GameAudio;
-class GameSmoke;
 class PauseMenu;
+class RenderView;
+class Session;
 
-class GameApp : public OgreBites::ApplicationContext, public OgreBites::InputListener {
+class GameApp : public OgreBites::ApplicationContext,
+                public OgreBites::InputListener,
+                private FrameHost,
+                private ReplayHost {
 public:
     GameApp(Settings settings, const SettingsParser& parser);
     ~GameApp() override;
 
-    // Runs the game until quit or --ticks; returns the process exit code. Throws on load errors.
+    // Runs the game until quit, --ticks, the replay's end or a stop signal; returns the process
+    // exit code. Throws on load errors.
     int run();
 
 protected:
@@ -59,55 +55,43 @@ protected:
     bool mouseWheelRolled(const OgreBites::MouseWheelEvent& evt) override;
 
 private:
-    void prepareReplay();
-    int runLive();
-    int runReplay(bool timed);
-    void injectInput(const ReplayInput& in);
+    // FrameHost
+    void pollEvents() override { OgreBites::ApplicationContext::pollEvents(); }
+    void handleActions() override;
+    void tick() override;
+    void present(double alpha, double frameMs) override;
+    bool paused() const override;
+    bool quitRequested() const override;
+    std::uint64_t simTick() const override;
+    // ReplayHost
+    void applySetting(const std::string& key, const std::string& value, const std::string& where) override;
+    void injectInput(const ReplayInput& in) override;
+    void writeScreenshot(const std::string& path) override;
+    void finishFrame() override;
+    std::string stateHashHex() const override;
+
+    void load();
+    void applyAoSettings();
     void onButton(const std::string& name, bool down);
-    void applySetting(const std::string& key, const std::string& value, const std::string& where);
-    void writeCapture(const std::string& name);
+    InputRouting routing() const;
+    void setMenuOpen(bool open);
+    void setPanelVisible(bool visible);
+    void updatePointerGrab();
+    void resizeWindow(int width, int height);
     void writeRecording();
     std::string rendererDescription() const;
-    void loadLevel();
-    void createScene();
-    void stepSimulation();
-    void updateView(double alpha);
-    void handleTriggeredActions();
-    void renderFrame(double frameMs);
-    void writeScreenshot(const std::string& path);
-    void finishFrame();
     std::string dataPath(const std::string& relative) const;
 
     Settings settings_;
     const SettingsParser& parser_;
     InputState input_;
 
-    std::unique_ptr<map::Level> level_;
-    std::unique_ptr<sim::Simulation> sim_;
-    std::unique_ptr<sim::PlayerState> previousPlayer_;  // for render interpolation
-
-    Ogre::SceneManager* scene_ = nullptr;
-    Ogre::Camera* camera_ = nullptr;
-    Ogre::SceneNode* cameraNode_ = nullptr;
-    Ogre::Viewport* viewport_ = nullptr;
-    Ogre::TexturePtr offscreen_;  // headless render target
-    std::unique_ptr<render::LevelMaterials> materials_;
-    std::unique_ptr<render::LevelGeometry> levelGeometry_;
-    std::unique_ptr<render::PropView> props_;
-    std::unique_ptr<render::Hud> hud_;
-    std::unique_ptr<ssao::AmbientOcclusion> ao_;
-    std::unique_ptr<frame::Frame> frame_;  // the pass order; ao_ and smoke_'s technique plug into it
-    void applyAoSettings();
-    std::string aoStatus() const;
+    std::unique_ptr<Session> session_;
+    std::unique_ptr<RenderView> view_;
     std::unique_ptr<GameAudio> audio_;
-    std::unique_ptr<CombatView> combat_;
-    std::unique_ptr<GameSmoke> smoke_;
     std::unique_ptr<PauseMenu> menu_;
-    std::unique_ptr<OgreBites::ImGuiInputListener> imguiInput_;  // the menu's mouse and keys
-    bool menuTakesInput() const;
-    void setMenuOpen(bool open);
-    void resizeWindow(int width, int height);
-    double hitMarker_ = 0;  // HUD hit marker, 1 at a hit, fading per tick
+    std::unique_ptr<DebugPanel> panel_;
+    std::unique_ptr<OgreBites::ImGuiInputListener> imguiInput_;  // the menu's and the panel's mouse and keys
 
     std::unique_ptr<replay::Script> script_;      // --replay / --timedemo
     std::unique_ptr<replay::Recorder> recorder_;  // --record

@@ -2,14 +2,13 @@
 #include "app/game_audio.h"
 
 #include "settings.h"
+#include "tick_durations.h"
 
 #include <algorithm>
 
 namespace obscura {
 
 namespace {
-constexpr int kHissTicks = 180;      // the smoke grenade emits for 3 s (SmokeSettings::emitTime) at 60 Hz
-constexpr int kHissFadeTicks = 30;   // and its hiss fades over the last half second
 audio::AudioSettings audioSettings(const Settings& s) {
     audio::AudioSettings a;
     a.masterVolume = static_cast<float>(s.masterVolume);
@@ -26,7 +25,9 @@ const char* impactSound(sim::Surface s) {
 }
 }  // namespace
 
-GameAudio::GameAudio(const Settings& settings, const std::string& soundDir) : audio_(audioSettings(settings)) {
+GameAudio::GameAudio(const Settings& settings, const std::string& soundDir, double hissSeconds)
+    : audio_(audioSettings(settings)), hissTicks_(ticksFor(hissSeconds, settings.tickRate)),
+      hissFadeTicks_(std::min(hissTicks_, TickDurations(settings.tickRate).hissFadeTicks)) {
     audio_.loadSounds(soundDir);
 }
 
@@ -38,7 +39,7 @@ void GameAudio::onEvents(const std::vector<sim::SimEvent>& events) {
     if (!audio_.available()) return;
     for (auto& h : hisses_) {
         if (--h.ticksLeft <= 0) audio_.stop(h.handle);
-        else if (h.ticksLeft < kHissFadeTicks) audio_.setSourceGain(h.handle, static_cast<float>(h.ticksLeft) / kHissFadeTicks);
+        else if (h.ticksLeft < hissFadeTicks_) audio_.setSourceGain(h.handle, static_cast<float>(h.ticksLeft) / static_cast<float>(hissFadeTicks_));
     }
     hisses_.erase(std::remove_if(hisses_.begin(), hisses_.end(), [](const Hiss& h) { return h.ticksLeft <= 0; }), hisses_.end());
     using T = sim::SimEventType;
@@ -67,7 +68,7 @@ void GameAudio::onEvents(const std::vector<sim::SimEvent>& events) {
             case T::ReloadStart: audio_.play("reload", e.position, 0.8f); break;
             case T::DryFire: audio_.play("dry_fire", e.position); break;
             case T::GrenadeDetonate:
-                if (auto h = audio_.play("smoke_hiss", e.position, 1.0f, 1.0f, true)) hisses_.push_back({h, kHissTicks});
+                if (auto h = audio_.play("smoke_hiss", e.position, 1.0f, 1.0f, true)) hisses_.push_back({h, hissTicks_});
                 break;
             default: break;  // PropHit, Jump, ReloadEnd
         }

@@ -17,8 +17,9 @@ struct Settings;
 
 class GameAudio {
 public:
-    // Loads every sound in `soundDir` (throws at load time for a malformed WAV).
-    GameAudio(const Settings& settings, const std::string& soundDir);
+    // Loads every sound in `soundDir` (throws at load time for a malformed WAV). A detonated
+    // grenade hisses for `hissSeconds` (the smoke's emit time), at settings.tickRate ticks a second.
+    GameAudio(const Settings& settings, const std::string& soundDir, double hissSeconds);
 
     void setVolumes(double master, double effects);
     // Once per simulation tick: the events of that tick.
@@ -37,6 +38,7 @@ private:
         int ticksLeft;
     };
     std::vector<Hiss> hisses_;
+    int hissTicks_, hissFadeTicks_;
 };
 
 }  // namespace obscura

@@ -130,3 +130,46 @@ TEST(Headless, NoAudioDeviceRunsSilentWithOneWarning) {
     EXPECT_EQ(lines, 1u) << r.out;
     EXPECT_NE(r.out.find("running silent"), std::string::npos) << r.out;
 }
+
+// Ctrl-C and SIGTERM end every run mode within a second, through the normal shutdown: the run
+// leaves its frame loop, prints its state hash and exits 0.
+namespace {
+struct Stopped {
+    int code = -1;
+    long ms = -1;  // from the signal to the exit
+    std::string out;
+};
+
+Stopped stopAfter(const std::string& args, const char* signal, int afterSeconds) {
+    const std::string log = temp(std::string("stopped-") + signal + ".log");
+    const GameRun r = obscura::testing_support::runProcess(
+        "'" OBSCURA_GAME "' " + args + " > '" + log + "' 2>&1 & pid=$!; sleep " + std::to_string(afterSeconds) +
+        "; t0=$(date +%s%N); kill -" + signal + " $pid; wait $pid; rc=$?; t1=$(date +%s%N); "
+        "echo \"rc=$rc ms=$(( (t1 - t0) / 1000000 ))\"; cat '" + log + "'");
+    Stopped s;
+    s.out = r.out;
+    std::sscanf(r.out.c_str(), "rc=%d ms=%ld", &s.code, &s.ms);
+    return s;
+}
+}  // namespace
+
+TEST(Headless, SigtermAndCtrlCEndEveryRunModeCleanlyWithinASecond) {
+    const std::string dir = temp("stopped-captures");
+    fs::create_directories(dir);
+    const std::string timedemo = std::string(OBSCURA_SOURCE_DIR) + "/bench/timedemo_arena.replay";
+    struct Mode {
+        std::string args;
+        const char* signal;
+    };
+    for (const Mode& m : {Mode{"--headless --ticks 100000000 --width 64 --height 64", "TERM"},
+                          Mode{"--headless --ticks 100000000 --width 64 --height 64", "INT"},
+                          Mode{"--replay " + timedemo + " --capture-dir " + dir, "TERM"},
+                          Mode{"--headless --timedemo " + timedemo, "INT"}}) {
+        const Stopped s = stopAfter(m.args, m.signal, 4);
+        EXPECT_EQ(s.code, 0) << m.args << "\n" << s.out;
+        EXPECT_GE(s.ms, 0) << s.out;
+        EXPECT_LT(s.ms, 1000) << m.args << "\n" << s.out;
+        EXPECT_NE(s.out.find(std::string("stopped by SIG") + m.signal), std::string::npos) << s.out;
+        EXPECT_EQ(stateHash(s.out).size(), 16u) << s.out;
+    }
+}

@@ -1,0 +1,235 @@
+// See render_view.h.
+#include "app/render_view.h"
+
+#include "app/combat_view.h"
+#include "render/hud.h"
+#include "render/level_geometry.h"
+#include "render/level_lighting.h"
+#include "render/level_materials.h"
+#include "render/model_loader.h"
+#include "render/ogre_convert.h"
+#include "render/prop_view.h"
+#include "session.h"
+#include "frame/frame.h"
+#include "smoke/smoke_render.h"
+#include "ssao/ssao_compositor.h"
+
+#include <Ogre.h>
+#include <OgreOverlaySystem.h>
+#include <OgreRTShaderSystem.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace obscura {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+double degToRad(double d) { return d * kPi / 180.0; }
+
+// Settings give the horizontal FOV (what players tune); OGRE wants the vertical one.
+Ogre::Radian verticalFov(double horizontalDegrees, double aspect) {
+    return Ogre::Radian(static_cast<Ogre::Real>(2.0 * std::atan(std::tan(degToRad(horizontalDegrees) * 0.5) / aspect)));
+}
+}  // namespace
+
+RenderView::AoSettings RenderView::aoSettings(const Settings& s) {
+    return {s.ssao, s.ssaoRadius, s.ssaoIntensity, s.ssaoSamples, s.ssaoResolution, s.aoOnly, s.exposure};
+}
+
+RenderView::RenderView(const Context& context, const Settings& settings, const Session& session)
+    : root_(context.root), window_(context.window), overlays_(context.overlays), shaders_(context.shaders) {
+    const map::Level& level = session.level();
+    scene_ = root_.createSceneManager();
+    scene_->addRenderQueueListener(&overlays_);
+    shaders_.addSceneManager(scene_);
+    scene_->setAmbientLight(Ogre::ColourValue(0.3f, 0.3f, 0.3f));
+
+    camera_ = scene_->createCamera("PlayerCamera");
+    // Near plane 5 cm: the capsule keeps the eye at least its radius (0.35 m) from walls.
+    camera_->setNearClipDistance(0.05f);
+    camera_->setFarClipDistance(2000.0f);
+    cameraNode_ = scene_->getRootSceneNode()->createChildSceneNode();
+    cameraNode_->attachObject(camera_);
+
+    if (settings.headless) {
+        offscreen_ = Ogre::TextureManager::getSingleton().createManual(
+            "Obscura/Offscreen", Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_2D, static_cast<Ogre::uint>(settings.width),
+            static_cast<Ogre::uint>(settings.height), 0, Ogre::PF_BYTE_RGB, Ogre::TU_RENDERTARGET);
+        target().setAutoUpdated(true);
+    }
+    viewport_ = target().addViewport(camera_);
+    viewport_->setBackgroundColour(Ogre::ColourValue(0.05f, 0.05f, 0.06f));
+    viewport_->setMaterialScheme(Ogre::RTShader::ShaderGenerator::DEFAULT_SCHEME_NAME);
+    viewport_->setOverlaysEnabled(true);
+    const double aspect = static_cast<double>(viewport_->getActualWidth()) / viewport_->getActualHeight();
+    camera_->setAspectRatio(static_cast<Ogre::Real>(aspect));
+    camera_->setFOVy(verticalFov(settings.fov, aspect));
+
+    materials_ = std::make_unique<render::LevelMaterials>(Ogre::RGN_DEFAULT);
+    auto start = std::chrono::steady_clock::now();
+    render::applyLevelLighting(level);
+    render::createSun(*scene_, level);
+    levelGeometry_ = std::make_unique<render::LevelGeometry>(*scene_, level, *materials_);
+    // misc_model meshes, visible only: the session built their colliders from the same files.
+    const auto modelDirs = Session::modelSearchDirs(settings);
+    for (const auto& m : level.models)
+        render::placeModel(*scene_, m, settings.level, modelDirs, Ogre::RGN_DEFAULT, *materials_);
+    props_ = std::make_unique<render::PropView>(*scene_, *materials_);
+
+    const auto& s = levelGeometry_->stats();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::ostringstream os;
+    os << "level " << settings.level << ": " << level.brushes.size() << " brushes, " << s.triangles << " triangles in "
+       << s.batches << " batches (" << s.chunks << " chunks), " << s.lights << " lights, " << level.models.size()
+       << " models, " << materials_->generatedCount() << " generated materials; scene built in " << ms << " ms";
+    Ogre::LogManager::getSingleton().logMessage(os.str());
+    std::cout << os.str() << "\n";
+
+    frame::FrameSettings fs;
+    fs.maxRenderTargets = settings.debugMaxRenderTargets;
+    fs.unsupportedFormats = settings.debugUnsupportedFormats;
+    frame_ = std::make_unique<frame::Frame>(*viewport_, *camera_, fs);
+    ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
+    smoke_ = std::make_unique<smoke::SmokeRender>();
+    frame_->add(*ao_);
+    frame_->add(*smoke_);
+    // The heightfield mode's height map, over the level's brushes (models stand inside them).
+    if (!level.bounds.empty())
+        ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level.bounds.min), render::toOgre(level.bounds.max)),
+                            render::kSkyVisibilityFlag);
+    applyAo(aoSettings(settings));
+
+    combat_ = std::make_unique<CombatView>(*scene_, *materials_, *cameraNode_, session.durations());
+    hud_ = std::make_unique<render::Hud>();
+    hud_->setPanelVisible(settings.showDebugPanel);
+}
+
+RenderView::~RenderView() {
+    // Order matters (see shared/README): our OGRE objects first, then the scene manager.
+    hud_.reset();
+    frame_.reset();  // before the techniques plugged into it
+    smoke_.reset();
+    combat_.reset();
+    ao_.reset();
+    props_.reset();
+    levelGeometry_.reset();
+    materials_.reset();
+    shaders_.removeSceneManager(scene_);
+    if (offscreen_) {
+        Ogre::TextureManager::getSingleton().remove(offscreen_);
+        offscreen_.reset();
+    }
+    scene_->removeRenderQueueListener(&overlays_);
+    root_.destroySceneManager(scene_);
+}
+
+Ogre::RenderTarget& RenderView::target() {
+    if (offscreen_) return *offscreen_->getBuffer()->getRenderTarget();
+    return window_;
+}
+
+void RenderView::applyAo(const AoSettings& a) {
+    ssao::AoKnobs k;
+    k.radius = a.radius;
+    k.intensity = a.intensity;
+    k.samples = a.samples;
+    k.resolution = a.resolution;
+    ao_->setKnobs(k);
+    ao_->setMode(a.mode);  // the frame rebuilds its chain at the next frame
+    frame_->setView(a.aoOnly ? frame::View::AO : frame::View::Scene);
+    frame_->setExposure(static_cast<float>(a.exposure));
+}
+
+std::string RenderView::aoStatus() const {
+    return frame_->offReason(*ao_).empty() ? ao_->mode() : ao_->mode() + " (off here)";
+}
+
+void RenderView::setFov(double horizontalDegrees) {
+    camera_->setFOVy(verticalFov(horizontalDegrees, camera_->getAspectRatio()));
+}
+
+void RenderView::resized(int width, int height, double horizontalFov) {
+    camera_->setAspectRatio(static_cast<Ogre::Real>(width) / static_cast<Ogre::Real>(height));
+    setFov(horizontalFov);  // the vertical FOV follows the aspect
+}
+
+void RenderView::onTick(const std::vector<sim::SimEvent>& events) { combat_->onTick(events); }
+
+void RenderView::update(const Session& session, double alpha) {
+    const auto& a = session.previousPlayer();
+    const auto& b = session.sim().player();
+    const Vec3 ea = a.eye(), eb = b.eye();
+    eye_ = ea + (eb - ea) * alpha;
+    // Interpolate angles along the short way round.
+    double dyaw = b.yaw - a.yaw;
+    dyaw = std::remainder(dyaw, 2.0 * kPi);
+    const double yaw = a.yaw + dyaw * alpha;
+    const double pitch = a.pitch + (b.pitch - a.pitch) * alpha;
+    cameraNode_->setPosition(static_cast<float>(eye_.x), static_cast<float>(eye_.y), static_cast<float>(eye_.z));
+    cameraNode_->setOrientation(Ogre::Quaternion(Ogre::Radian(static_cast<float>(yaw)), Ogre::Vector3::UNIT_Y) *
+                                Ogre::Quaternion(Ogre::Radian(static_cast<float>(pitch)), Ogre::Vector3::UNIT_X));
+    using Shape = render::PropPose::Shape;
+    std::vector<render::PropPose> poses;
+    for (const auto& body : session.sim().bodyPoses()) {
+        const bool barrel = body.shape == sim::Simulation::BodyPose::Shape::Cylinder;
+        poses.push_back({body.position, body.qx, body.qy, body.qz, body.qw, body.halfExtents,
+                         barrel ? Shape::Cylinder : Shape::Box, barrel ? "barrel" : "crate"});
+    }
+    for (const auto& g : session.sim().grenades())
+        poses.push_back({g.position, g.qx, g.qy, g.qz, g.qw, Vec3{g.radius, g.radius, g.radius}, Shape::Sphere, "metal"});
+    props_->update(poses);
+    combat_->update(session.sim().targets());
+}
+
+RenderView::Listener RenderView::listener() const {
+    const Ogre::Quaternion q = cameraNode_->getOrientation();
+    return {eye_, render::fromOgre(q * Ogre::Vector3::NEGATIVE_UNIT_Z), render::fromOgre(q * Ogre::Vector3::UNIT_Y)};
+}
+
+void RenderView::draw(const Session& session, const Frame& frame) {
+    render::HudState hs;
+    hs.visible = frame.hudVisible;
+    hs.crosshair = frame.crosshair;
+    hs.frameMs = frame.frameMs;
+    hs.frameMsIsFixed = frame.frameMsIsFixed;
+    hs.status.push_back("AO: " + aoStatus() + (frame_->view() == frame::View::AO ? " (AO only)" : ""));
+    const auto& w = session.sim().weapon();
+    hs.magazine = w.magazine;
+    hs.magazineSize = w.magazineSize;
+    hs.reserve = w.reserve;
+    hs.reloadProgress = w.reloading ? w.reloadProgress : -1.0;
+    hs.score = session.sim().score();
+    hs.hitMarker = session.hitMarker();
+    hs.throwCharge = session.sim().throwCharge() > 0 ? session.sim().throwCharge() : -1.0;
+    hud_->update(hs);
+
+    // The smoke: new fields to the GPU when it stepped; then the frame's chain for this frame's
+    // techniques (AO mode, smoke or none), outside the render.
+    const GameSmoke& smoke = session.smoke();
+    smoke_->update(smoke.manager(), smoke.version() != smokeUploaded_, static_cast<float>(smoke.seconds()));
+    smokeUploaded_ = smoke.version();
+    frame_->update(static_cast<float>(smoke.seconds()));
+    root_.renderOneFrame();
+}
+
+void RenderView::finishFrame() {
+    // GL queues work; llvmpipe runs it when something waits. Reading one pixel back makes each
+    // timed frame include its own rendering instead of a later frame's.
+    Ogre::uint8 pixel[4];
+    Ogre::PixelBox box(1, 1, 1, Ogre::PF_BYTE_RGBA, pixel);
+    target().copyContentsToMemory(Ogre::Box(0, 0, 1, 1), box);
+}
+
+void RenderView::writeScreenshot(const std::string& path) {
+    Ogre::RenderTarget& t = target();
+    Ogre::Image image(Ogre::PF_BYTE_RGB, t.getWidth(), t.getHeight());
+    t.copyContentsToMemory(image.getPixelBox(), image.getPixelBox());
+    image.save(path);
+}
+
+const render::LevelGeometryStats& RenderView::levelStats() const { return levelGeometry_->stats(); }
+
+}  // namespace obscura

@@ -1,0 +1,118 @@
+// What the player sees, and nothing else: the OGRE scene (level geometry, the visible misc_models,
+// props, targets and combat effects), the camera, the frame pipeline (engine_ext/frame) with its
+// techniques (ambient occlusion, the smoke's ray-march) and the HUD. It reads a Session one way —
+// every frame it is told the state to show — and never feeds anything back into the simulation.
+#pragma once
+
+#include "core/vec3.h"
+#include "settings.h"
+#include "sim/sim_events.h"
+
+#include <OgrePrerequisites.h>
+#include <OgreTexture.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Ogre {
+class OverlaySystem;
+class RenderWindow;
+namespace RTShader { class ShaderGenerator; }
+}  // namespace Ogre
+
+namespace obscura {
+namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; struct LevelGeometryStats; }
+namespace frame { class Frame; }
+namespace smoke { class SmokeRender; }
+namespace ssao { class AmbientOcclusion; }
+class CombatView;
+class Session;
+
+class RenderView {
+public:
+    // What OGRE's application context owns and the view draws with.
+    struct Context {
+        Ogre::Root& root;
+        Ogre::RenderWindow& window;
+        Ogre::OverlaySystem& overlays;
+        Ogre::RTShader::ShaderGenerator& shaders;
+    };
+    // The AO settings the view shows (game/settings.h has their meaning and defaults).
+    struct AoSettings {
+        std::string mode;
+        double radius = 0, intensity = 0;
+        int samples = 0;
+        double resolution = 1;
+        bool aoOnly = false;
+        double exposure = 1;
+    };
+    static AoSettings aoSettings(const Settings& settings);
+    // One frame's HUD facts the session does not hold.
+    struct Frame {
+        double frameMs = 0;
+        bool frameMsIsFixed = false;  // headless: the fixed tick time, so captures repeat
+        bool hudVisible = true;
+        bool crosshair = true;        // off while the menu is open
+    };
+    // The camera, for the sound's listener (metres, world space).
+    struct Listener {
+        Vec3 position, forward, up;
+    };
+
+    // Builds the scene for `session`'s level (headless: into an offscreen texture of
+    // settings.width x height) and applies the AO settings. Throws at load time.
+    RenderView(const Context& context, const Settings& settings, const Session& session);
+    ~RenderView();
+    RenderView(const RenderView&) = delete;
+    RenderView& operator=(const RenderView&) = delete;
+
+    // The frame's knobs: AO mode and knobs, the AO-only view, the exposure. A mode this GPU cannot
+    // run is turned off by the frame at the next frame, with one line on stderr.
+    void applyAo(const AoSettings& ao);
+    // The AO mode as the HUD and the panel say it ("horizon", "horizon (off here)").
+    std::string aoStatus() const;
+
+    // Camera: horizontal field of view (degrees); a resized window's new aspect.
+    void setFov(double horizontalDegrees);
+    void resized(int width, int height, double horizontalFov);
+
+    // After each simulation tick: effects for its events.
+    void onTick(const std::vector<sim::SimEvent>& events);
+    // Once a frame: the camera between the previous and the latest tick (alpha 0..1), props, targets.
+    void update(const Session& session, double alpha);
+    Listener listener() const;
+    // Once a frame: the HUD, the smoke's fields, then OGRE renders the frame.
+    void draw(const Session& session, const Frame& frame);
+    // Waits for the frame's rendering (timed frames include their own GPU work).
+    void finishFrame();
+    void writeScreenshot(const std::string& path);
+
+    render::Hud& hud() { return *hud_; }
+    const render::LevelGeometryStats& levelStats() const;
+
+private:
+    Ogre::RenderTarget& target();
+
+    Ogre::Root& root_;
+    Ogre::RenderWindow& window_;
+    Ogre::OverlaySystem& overlays_;
+    Ogre::RTShader::ShaderGenerator& shaders_;
+    Ogre::SceneManager* scene_ = nullptr;
+    Ogre::Camera* camera_ = nullptr;
+    Ogre::SceneNode* cameraNode_ = nullptr;
+    Ogre::Viewport* viewport_ = nullptr;
+    Ogre::TexturePtr offscreen_;  // headless render target
+    Vec3 eye_;
+    std::unique_ptr<render::LevelMaterials> materials_;
+    std::unique_ptr<render::LevelGeometry> levelGeometry_;
+    std::unique_ptr<render::PropView> props_;
+    std::unique_ptr<ssao::AmbientOcclusion> ao_;
+    std::unique_ptr<smoke::SmokeRender> smoke_;
+    std::unique_ptr<frame::Frame> frame_;  // the pass order; ao_ and smoke_ plug into it
+    std::unique_ptr<CombatView> combat_;
+    std::unique_ptr<render::Hud> hud_;
+    std::uint64_t smokeUploaded_ = 0;  // GameSmoke::version() of the fields on the GPU
+};
+
+}  // namespace obscura

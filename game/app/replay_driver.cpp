@@ -1,0 +1,119 @@
+// See replay_driver.h.
+#include "app/replay_driver.h"
+
+#include "replay/replay_script.h"
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace obscura {
+
+namespace fs = std::filesystem;
+
+namespace {
+// CPU time of the whole process, all threads (llvmpipe rasterises on its own threads).
+double processCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
+// 10 frames: a new AO compositor compiles its shaders in its first two or three.
+constexpr std::size_t kTimedemoWarmupFrames = 10;
+}  // namespace
+
+std::unique_ptr<replay::Script> prepareReplay(Settings& settings, const SettingsParser& parser) {
+    const std::string& path = !settings.timedemo.empty() ? settings.timedemo : settings.replay;
+    if (path.empty()) return nullptr;
+    // Every `set` is validated now, against a scratch copy: a bad value fails before the first frame.
+    auto known = [&parser](const std::string& key) { return parser.isRuntime(key); };
+    auto script = std::make_unique<replay::Script>(replay::loadScript(path, known));
+    Settings scratch = settings;
+    for (const auto& c : script->commands)
+        if (c.type == replay::Command::Type::Set)
+            parser.apply(c.name, c.value, scratch, script->fileName + ":" + std::to_string(c.line));
+
+    // The script's header decides the level, seed, resolution and tick rate.
+    fs::path level = script->level;
+    if (level.is_relative()) {
+        const fs::path besideScript = fs::path(path).parent_path() / level;
+        level = fs::exists(besideScript) ? besideScript : fs::path(settings.dataDir) / level;
+    }
+    if (!fs::is_regular_file(level)) throw replay::ScriptError(path + ": level '" + script->level + "' not found");
+    settings.level = level.string();
+    settings.seed = script->seed;
+    settings.width = script->width;
+    settings.height = script->height;
+    settings.tickRate = script->tickRate;
+    if (!script->start.empty()) settings.startPose = script->start;
+    settings.vsync = false;
+    if (settings.replay.size()) settings.headless = true;
+
+    if (!settings.replay.empty()) {
+        // Fail now, not at the first capture, if the folder cannot be written.
+        std::error_code ec;
+        fs::create_directories(settings.captureDir, ec);
+        const fs::path probe = fs::path(settings.captureDir) / ".obscura-write-test";
+        std::ofstream(probe.string()) << "";
+        if (ec || !fs::exists(probe))
+            throw std::runtime_error("capture folder '" + settings.captureDir + "' cannot be written");
+        fs::remove(probe, ec);
+    }
+    return script;
+}
+
+ReplayDriver::ReplayDriver(const replay::Script& script, ReplayHost& host, bool timed, double tickRate,
+                           std::string captureDir)
+    : script_(script), host_(host), timed_(timed), fixedMs_(1000.0 / tickRate), captureDir_(std::move(captureDir)),
+      player_(script), lastMs_(fixedMs_) {}
+
+void ReplayDriver::beforeFrame(FrameHost&) {
+    start_ = std::chrono::steady_clock::now();
+    cpuStart_ = processCpuMs();
+    due_ = player_.take(tick_);
+    if (!due_.settings.empty() && !segments_.back().frameMs.empty()) segments_.push_back({});
+    for (const auto* c : due_.settings) {
+        host_.applySetting(c->name, c->value, script_.fileName + ":" + std::to_string(c->line));
+        segments_.back().label += (segments_.back().label.empty() ? "" : " ") + c->name + "=" + c->value;
+    }
+    for (const auto& in : due_.inputs) host_.injectInput(in);
+}
+
+void ReplayDriver::afterFrame(FrameHost&) {
+    if (timed_) host_.finishFrame();
+    for (const auto* c : due_.captures) writeCapture(c->name);
+    for (const auto* c : due_.hashes) {
+        const std::string hex = host_.stateHashHex();
+        std::cout << "hash " << tick_ << " " << hex << "\n";
+        if (!c->value.empty() && c->value != hex && !diverged_) {
+            diverged_ = true;
+            std::cerr << script_.fileName << ":" << c->line << ": replay diverged at tick " << tick_ << ": expected "
+                      << c->value << ", got " << hex << "\n";
+        }
+    }
+    lastMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+    frameMs_.push_back(lastMs_);
+    segments_.back().frameMs.push_back(lastMs_);
+    segments_.back().cpuMs.push_back(processCpuMs() - cpuStart_);
+    ++tick_;
+}
+
+void ReplayDriver::writeCapture(const std::string& name) {
+    // Write beside, then rename: a capture is never left half-written.
+    const fs::path final = fs::path(captureDir_) / (name + ".png");
+    const fs::path partial = fs::path(captureDir_) / (name + ".partial.png");
+    host_.writeScreenshot(partial.string());
+    fs::rename(partial, final);
+    std::cout << "capture " << name << " " << final.string() << "\n";
+}
+
+std::string ReplayDriver::report() const {
+    if (!timed_) return "";
+    auto segments = segments_;
+    for (auto& seg : segments)
+        if (seg.label.empty()) seg.label = "start";
+    return formatFrameStats(computeFrameStats(frameMs_), script_.fileName) + formatSegments(segments, kTimedemoWarmupFrames);
+}
+
+}  // namespace obscura

@@ -1,0 +1,73 @@
+// Replays and timedemos through the one frame loop (app/run_driver.h): before each frame the
+// script's inputs and `set`s due at that tick, exactly one tick per frame, after it the captures
+// and state hashes due (a diverging hash names the script line and the tick); a timedemo also
+// times every frame and prints the statistics at the end.
+//
+// No OGRE here: the game (ReplayHost) injects the inputs as real window events, applies settings
+// and writes images.
+#pragma once
+
+#include "app/run_driver.h"
+#include "replay_player.h"
+#include "settings.h"
+#include "timedemo_stats.h"
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace obscura {
+namespace replay { struct Script; }
+
+// --replay / --timedemo: loads the script, checks every `set` against a scratch copy of the
+// settings (a bad value fails before the first frame), and lets the script's header decide the
+// level, seed, resolution, tick rate and start. Checks that the capture folder can be written.
+// Returns null when the run is no replay. Throws replay::ScriptError / SettingsError.
+std::unique_ptr<replay::Script> prepareReplay(Settings& settings, const SettingsParser& parser);
+
+class ReplayHost {
+public:
+    virtual ~ReplayHost() = default;
+    // A `set` (validated by prepareReplay, so this does not throw); `where` is file:line.
+    virtual void applySetting(const std::string& key, const std::string& value, const std::string& where) = 0;
+    virtual void injectInput(const ReplayInput& in) = 0;
+    virtual void writeScreenshot(const std::string& path) = 0;
+    virtual void finishFrame() = 0;  // waits for the frame's rendering
+    virtual std::string stateHashHex() const = 0;
+};
+
+class ReplayDriver : public RunDriver {
+public:
+    // timed: a timedemo (frame times measured and shown); else captures show the fixed tick time.
+    ReplayDriver(const replay::Script& script, ReplayHost& host, bool timed, double tickRate, std::string captureDir);
+
+    void beforeFrame(FrameHost& host) override;
+    FramePlan plan(const FrameHost&) override { return {1, 1.0, timed_ ? lastMs_ : fixedMs_}; }
+    void afterFrame(FrameHost& host) override;
+    bool finished(const FrameHost&) const override { return tick_ > player_.lastTick(); }
+    // 3 when a hash diverged.
+    int exitCode() const override { return diverged_ ? 3 : 0; }
+    // The timedemo's statistics (empty for a replay).
+    std::string report() const;
+
+private:
+    void writeCapture(const std::string& name);
+
+    const replay::Script& script_;
+    ReplayHost& host_;
+    bool timed_;
+    double fixedMs_;
+    std::string captureDir_;
+    ReplayPlayer player_;
+    ReplayTick due_;
+    std::int64_t tick_ = 0;
+    double lastMs_;
+    bool diverged_ = false;
+    std::chrono::steady_clock::time_point start_;
+    double cpuStart_ = 0;
+    std::vector<double> frameMs_;
+    std::vector<TimedemoSegment> segments_{1};
+};
+
+}  // namespace obscura

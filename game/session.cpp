@@ -1,0 +1,87 @@
+// See session.h.
+#include "session.h"
+
+#include "map/map_compile.h"
+#include "mesh/model_path.h"
+#include "mesh/ogre_mesh_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+namespace obscura {
+
+namespace {
+double degToRad(double d) { return d * 3.14159265358979323846 / 180.0; }
+
+sim::SimConfig simConfig(const Settings& settings) {
+    sim::SimConfig config;
+    config.tickRate = settings.tickRate;
+    config.seed = settings.seed;
+    if (!settings.startPose.empty()) {
+        std::istringstream is(settings.startPose);
+        double x, y, z, yaw, pitch;
+        is >> x >> y >> z >> yaw >> pitch;
+        config.overrideStart = true;
+        const sim::PlayerTuning standing;
+        config.startFeet = {x, y - (standing.standHeight - standing.eyeBelowTop), z};
+        config.startYaw = degToRad(yaw);
+        config.startPitch = degToRad(pitch);
+    }
+    return config;
+}
+
+// misc_model meshes as static colliders and smoke obstacles, read without the renderer.
+std::vector<TriangleMesh> modelColliders(const map::Level& level, const Settings& settings) {
+    std::vector<TriangleMesh> meshes;
+    const auto dirs = Session::modelSearchDirs(settings);
+    for (const auto& m : level.models) {
+        const std::string file = mesh::findModelFile(m.mesh, dirs);
+        if (file.empty()) throw std::runtime_error(settings.level + ": misc_model mesh '" + m.mesh + "' not found");
+        meshes.push_back(mesh::meshTriangles(mesh::readOgreMesh(file), {m.origin, m.yaw, m.scale}));
+    }
+    return meshes;
+}
+}  // namespace
+
+Vec3 parseVec3(const std::string& text) {
+    std::istringstream is(text);
+    Vec3 p;
+    is >> p.x >> p.y >> p.z;
+    return p;
+}
+
+map::Level Session::loadLevel(const Settings& settings, std::vector<std::string>* warnings) {
+    map::CompileOptions options;
+    options.unitsPerMetre = settings.mapScale;
+    return map::loadLevel(settings.level, options, warnings);
+}
+
+std::vector<std::string> Session::modelSearchDirs(const Settings& settings) {
+    return {std::filesystem::path(settings.level).parent_path().string(), settings.dataDir,
+            std::filesystem::current_path().string()};
+}
+
+Session::Session(const Settings& settings, map::Level level, const Vec3& towardSun)
+    : level_(std::move(level)),
+      durations_(settings.tickRate),
+      colliders_(modelColliders(level_, settings)),
+      sim_(level_, simConfig(settings), colliders_),
+      smoke_(level_, colliders_, towardSun, settings.tickRate),
+      previousPlayer_(sim_.player()) {
+    if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
+}
+
+void Session::step(const sim::PlayerCommand& cmd) {
+    previousPlayer_ = sim_.player();
+    sim_.step(cmd);
+    const auto& events = sim_.events();
+    smoke_.onTick(events, sim_);
+    hitMarker_ = std::max(0.0, hitMarker_ - durations_.hitMarkerFadePerTick);
+    for (const auto& e : events)
+        if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;
+}
+
+}  // namespace obscura

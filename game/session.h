@@ -1,0 +1,64 @@
+// One game session in plain C++ (no OGRE): the level, its misc_model colliders read by
+// engine_ext/mesh, the simulation, the smoke and the little presentation state that follows
+// the ticks (the previous player pose for interpolation, the HUD's hit marker). The game owns it
+// and advances it one tick at a time; rendering, sound and the HUD only read it.
+#pragma once
+
+#include "core/triangle_mesh.h"
+#include "core/vec3.h"
+#include "game_smoke.h"
+#include "map/level.h"
+#include "settings.h"
+#include "sim/player_controller.h"
+#include "sim/simulation.h"
+#include "tick_durations.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace obscura {
+
+class Session {
+public:
+    // Reads and compiles settings.level (throws map/IO errors naming the file).
+    static map::Level loadLevel(const Settings& settings, std::vector<std::string>* warnings);
+    // The folders a relative misc_model path is looked for in: the .map file's, the data folder,
+    // the working directory (the renderer places the visible model from the same list).
+    static std::vector<std::string> modelSearchDirs(const Settings& settings);
+
+    // Builds the colliders, the simulation and the smoke for `level`. towardSun (unit) is the
+    // light the smoke's self-shadow is computed for. Throws at load time: a missing or malformed
+    // model, a bad level or tick rate.
+    Session(const Settings& settings, map::Level level, const Vec3& towardSun);
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    // One fixed tick: the simulation, then the smoke and the hit marker from its events.
+    void step(const sim::PlayerCommand& cmd);
+    void spawnSmoke(const Vec3& where) { smoke_.spawn(where); }
+
+    const map::Level& level() const { return level_; }
+    const sim::Simulation& sim() const { return sim_; }
+    const GameSmoke& smoke() const { return smoke_; }
+    const std::vector<sim::SimEvent>& events() const { return sim_.events(); }
+    std::uint64_t tick() const { return sim_.tick(); }
+    const TickDurations& durations() const { return durations_; }
+    // The player before the last tick (the view interpolates from it to sim().player()).
+    const sim::PlayerState& previousPlayer() const { return previousPlayer_; }
+    double hitMarker() const { return hitMarker_; }
+
+private:
+    map::Level level_;
+    TickDurations durations_;
+    std::vector<TriangleMesh> colliders_;  // the misc_models' triangles, world space
+    sim::Simulation sim_;
+    GameSmoke smoke_;
+    sim::PlayerState previousPlayer_;
+    double hitMarker_ = 0;  // 1 at a hit, fading over kHitMarkerFadeSeconds
+};
+
+// "x y z" (validated by the settings table already).
+Vec3 parseVec3(const std::string& text);
+
+}  // namespace obscura
