@@ -22,7 +22,7 @@ namespace obscura {
 namespace {
 
 const char* const kActionNames[] = {"forward", "back", "left", "right", "jump", "crouch", "sprint", "fire",
-                                    "reload", "throw", "cycle_ao", "ao_only_view", "toggle_debug",
+                                    "reload", "throw", "cycle_ao", "ao_only_view", "cycle_view", "toggle_debug",
                                     "screenshot", "menu"};
 static_assert(sizeof(kActionNames) / sizeof(kActionNames[0]) == static_cast<size_t>(Action::Count));
 
@@ -126,7 +126,7 @@ Settings::Settings() {
     bindings = {{Action::Forward, "w"},      {Action::Back, "s"},         {Action::Left, "a"},
                 {Action::Right, "d"},        {Action::Jump, "space"},     {Action::Crouch, "lctrl"},
                 {Action::Sprint, "lshift"},  {Action::Fire, "mouse1"},    {Action::Reload, "r"},
-                {Action::Throw, "g"},        {Action::CycleAo, "o"},      {Action::AoOnlyView, "p"},
+                {Action::Throw, "g"},        {Action::CycleAo, "o"},      {Action::AoOnlyView, "p"},   {Action::CycleView, "v"},
                 {Action::ToggleDebug, "f1"}, {Action::Screenshot, "f12"}, {Action::Menu, "escape"}};
 }
 
@@ -211,6 +211,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"effects-volume", "sound effects volume 0..1 (times the master volume)", num(&S::effectsVolume, "effects-volume", 0, 1)});
     I.add({ssao::kSamples.name, "AO samples per pixel (1.." + std::to_string(static_cast<int>(ssao::kSamples.max)) + ")",
            integer(&S::ssaoSamples, ssao::kSamples.name, ssao::kSamples.min, ssao::kSamples.max)});
+    I.add({"view", "what the frame shows at the start: scene, ao, albedo, normal, depth, direct-light, hdr-light (V cycles)",
+           str(&S::view)});
     I.add({frame::kExposure.name, "multiplies the light before the tone map", knob(&S::exposure, frame::kExposure)});
     I.add({"debug-unsupported-formats", "debug: pretend these render-target formats are missing (comma-separated OGRE "
                                         "names, e.g. PF_FLOAT32_GR; 3d: for volume textures)",

@@ -23,7 +23,7 @@ struct SettingsError : std::runtime_error {
 // Game actions a key or mouse button can be bound to. O is reserved for cycle_ao.
 enum class Action {
     Forward, Back, Left, Right, Jump, Crouch, Sprint, Fire, Reload, Throw,
-    CycleAo, AoOnlyView, ToggleDebug, Screenshot, Menu, Count
+    CycleAo, AoOnlyView, CycleView, ToggleDebug, Screenshot, Menu, Count
 };
 const char* actionName(Action a);
 std::optional<Action> actionFromName(const std::string& name);
@@ -60,6 +60,7 @@ struct Settings {
     int debugMaxRenderTargets = 0;  // debug: pretend the GPU has at most this many MRTs (0 = real)
     std::vector<std::string> debugUnsupportedFormats;  // debug: render-target formats pretended missing
     double exposure = frame::kExposure.value;  // engine_ext/frame/frame_knobs.h
+    std::string view = "scene";  // what the frame shows at the start (V cycles): scene, ao, albedo, ...
     bool aoOnly = false;         // show the AO term alone (P toggles it)
     // Headless runs
     bool headless = false;

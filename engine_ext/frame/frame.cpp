@@ -2,6 +2,7 @@
 #include "frame/frame.h"
 
 #include "frame/frame_shared.h"
+#include "gbuffer_view/gbuffer_view.h"
 
 #include <Ogre.h>
 #include <OgreCompositorChain.h>
@@ -112,6 +113,9 @@ Frame::Frame(Ogre::Viewport& viewport, Ogre::Camera& camera, FrameSettings setti
     noAo_ = constantTexture("Obscura/Frame/NoAO", Ogre::PF_FLOAT32_GR, open);
     noVolume_ = constantTexture("Obscura/Frame/NoVolume", Ogre::PF_FLOAT32_RGBA, clear);
     context_.camera = &camera_;
+    // The frame's own debug passes.
+    own_.push_back(std::make_unique<gbuffer_view::GBufferView>());
+    for (auto& t : own_) add(*t);
 }
 
 Frame::~Frame() {
@@ -175,6 +179,22 @@ std::vector<std::unique_ptr<Frame::Entry>> Frame::plan() const {
     // the order they were added.
     std::stable_sort(p.begin(), p.end(), [](const auto& a, const auto& b) { return a->stage < b->stage; });
     return p;
+}
+
+std::vector<std::string> Frame::views() const {
+    std::vector<std::string> v = {"scene", "ao"};
+    for (const Technique* t : techniques_)
+        for (const auto& name : t->views()) v.push_back(name);
+    return v;
+}
+
+void Frame::setView(const std::string& view) {
+    const auto all = views();
+    view_ = std::find(all.begin(), all.end(), view) != all.end() ? view : "scene";
+    for (Technique* t : techniques_) {
+        const auto own = t->views();
+        t->showView(std::find(own.begin(), own.end(), view_) != own.end() ? view_ : std::string());
+    }
 }
 
 void Frame::update(float time) {
@@ -310,7 +330,7 @@ void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
         u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
     } else if (passId == kOutputPass) {
         u.set("exposure", settings_.exposure);
-        u.set("view", static_cast<float>(view_ == View::AO ? 1 : 0));
+        u.set("view", view_ == "ao" ? 1.0f : 0.0f);
         u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
         u.set("volumePresent", published_["volumeMap"] != noVolume_ ? 1.0f : 0.0f);
     }

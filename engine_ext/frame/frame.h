@@ -39,7 +39,6 @@ struct FrameSettings {
     float exposure = 1.6f;
 };
 
-enum class View { Scene, AO };  // what the output shows (FRAME_VIEW_* in shaders/frame/output.frag)
 
 class Frame : public Ogre::MaterialManager::Listener {
 public:
@@ -52,8 +51,10 @@ public:
     void add(Technique& technique);
     void remove(Technique& technique);
     void setExposure(float exposure) { settings_.exposure = exposure; }
-    void setView(View v) { view_ = v; }
-    View view() const { return view_; }
+    // What the frame shows: "scene", "ao" (the AO alone), or a technique's debug view.
+    std::vector<std::string> views() const;
+    void setView(const std::string& view);
+    const std::string& view() const { return view_; }
     // Rebuilds the chain when a technique's compositor or configuration changed. Call once a
     // frame before rendering (never from inside a render).
     void update(float time);
@@ -85,7 +86,8 @@ private:
     Ogre::Camera& camera_;
     FrameSettings settings_;
     Gpu gpu_;
-    View view_ = View::Scene;
+    std::string view_ = "scene";
+    std::vector<std::unique_ptr<Technique>> own_;  // the frame's debug techniques (gbuffer_view)
     std::vector<Technique*> techniques_;
     std::vector<std::unique_ptr<Entry>> chain_;
     std::string builtKey_;

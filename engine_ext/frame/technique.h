@@ -78,6 +78,10 @@ public:
         std::string texture, unit;
     };
     virtual Output output() const { return {}; }
+    // Debug views it can show instead of the picture (Frame::views), and the one to show now
+    // ("" for none): a technique of the output stage then draws over the frame's output.
+    virtual std::vector<std::string> views() const { return {}; }
+    virtual void showView(const std::string& /*view*/) {}
 };
 
 }  // namespace obscura::frame

@@ -20,6 +20,7 @@
 #include <OgreRTShaderSystem.h>
 #include <SDL2/SDL.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -110,7 +111,8 @@ void GameApp::locateResources() {
     rgm.addResourceLocation(rtss + "/materials", "FileSystem", Ogre::RGN_INTERNAL);
     // Debian installs OgreUnifiedShader.h (needed by RTSS shaders) beside the shadow-volume programs.
     rgm.addResourceLocation("/usr/share/OGRE/Media/ShadowVolume", "FileSystem", Ogre::RGN_INTERNAL);
-    // Our own resources (media/resources.cfg lists them relative to the data folder).
+    // Our own resources (media/resources.cfg lists them relative to the data folder; "dir/*" is
+    // every folder in dir, in name order, so a technique's media/<t>/ and shaders/<t>/ join alone).
     Ogre::ConfigFile cf;
     cf.load(dataPath("media/resources.cfg"));
     for (const auto& [section, settings] : cf.getSettingsBySection()) {
@@ -120,7 +122,15 @@ void GameApp::locateResources() {
                 path = std::string(OBSCURA_GENERATED_DIR) + "/" + path.substr(11);
             else if (path.front() != '/')
                 path = dataPath(path);
-            rgm.addResourceLocation(path, type, section);
+            if (path.size() < 2 || path.compare(path.size() - 2, 2, "/*") != 0) {
+                rgm.addResourceLocation(path, type, section);
+                continue;
+            }
+            std::vector<std::string> folders;
+            for (const auto& entry : std::filesystem::directory_iterator(path.substr(0, path.size() - 2)))
+                if (entry.is_directory()) folders.push_back(entry.path().string());
+            std::sort(folders.begin(), folders.end());
+            for (const auto& folder : folders) rgm.addResourceLocation(folder, type, section);
         }
     }
 }
@@ -181,6 +191,12 @@ void GameApp::handleActions() {
                 settings_.ssao = ssao::cycleMode(settings_.ssao, t.shift ? -1 : 1);
                 applyAoSettings();
                 break;
+            case Action::CycleView: {
+                // The frame's debug views; the AO-only view follows P's setting.
+                const std::string v = view_->cycleView();
+                settings_.aoOnly = v == "ao";
+                break;
+            }
             case Action::AoOnlyView:
                 settings_.aoOnly = !settings_.aoOnly;
                 applyAoSettings();

@@ -15,6 +15,7 @@
 #include "ssao/ssao_compositor.h"
 
 #include <Ogre.h>
+#include <algorithm>
 #include <OgreOverlaySystem.h>
 #include <OgreRTShaderSystem.h>
 
@@ -101,6 +102,14 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
         ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level.bounds.min), render::toOgre(level.bounds.max)),
                             render::kSkyVisibilityFlag);
     applyAo(aoSettings(settings));
+    if (settings.view != "scene") {
+        frame_->setView(settings.view);
+        if (frame_->view() != settings.view) {
+            std::string all;
+            for (const auto& v : frame_->views()) all += (all.empty() ? "" : ", ") + v;
+            throw std::runtime_error("setting view: unknown view '" + settings.view + "', expected one of " + all);
+        }
+    }
 
     combat_ = std::make_unique<CombatView>(*scene_, *materials_, *cameraNode_, session.durations());
     hud_ = std::make_unique<render::Hud>();
@@ -139,8 +148,16 @@ void RenderView::applyAo(const AoSettings& a) {
     k.resolution = a.resolution;
     ao_->setKnobs(k);
     ao_->setMode(a.mode);  // the frame rebuilds its chain at the next frame
-    frame_->setView(a.aoOnly ? frame::View::AO : frame::View::Scene);
+    if (a.aoOnly) frame_->setView("ao");
+    else if (frame_->view() == "ao") frame_->setView("scene");
     frame_->setExposure(static_cast<float>(a.exposure));
+}
+
+std::string RenderView::cycleView() {
+    const auto views = frame_->views();
+    auto at = std::find(views.begin(), views.end(), frame_->view());
+    frame_->setView(at == views.end() || at + 1 == views.end() ? views.front() : *(at + 1));
+    return frame_->view();
 }
 
 std::string RenderView::aoStatus() const {
@@ -195,7 +212,8 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     hs.crosshair = frame.crosshair;
     hs.frameMs = frame.frameMs;
     hs.frameMsIsFixed = frame.frameMsIsFixed;
-    hs.status.push_back("AO: " + aoStatus() + (frame_->view() == frame::View::AO ? " (AO only)" : ""));
+    hs.status.push_back("AO: " + aoStatus() + (frame_->view() == "ao" ? " (AO only)" : ""));
+    if (frame_->view() != "scene" && frame_->view() != "ao") hs.status.push_back("view: " + frame_->view() + " (V)");
     const auto& w = session.sim().weapon();
     hs.magazine = w.magazine;
     hs.magazineSize = w.magazineSize;

@@ -72,6 +72,8 @@ public:
     void applyAo(const AoSettings& ao);
     // The AO mode as the HUD and the panel say it ("horizon", "horizon (off here)").
     std::string aoStatus() const;
+    // The next of the frame's views (scene, ao, the G-buffer's ...); returns it.
+    std::string cycleView();
 
     // Camera: horizontal field of view (degrees); a resized window's new aspect.
     void setFov(double horizontalDegrees);
