@@ -56,9 +56,9 @@ std::string shortNumber(double v) {
     return buf;
 }
 
-// The box placed entities must lie in: the brushes' box grown by kPlacementMargin on each side
-// (a level of models alone: the margin around the origin).
-Aabb allowedRegion(const Level& level) {
+}  // namespace
+
+Aabb placementRegion(const Level& level) {
     Aabb a;
     if (level.bounds.empty()) {
         a.min = a.max = Vec3{0, 0, 0};
@@ -75,6 +75,7 @@ bool inside(const Aabb& box, const Vec3& p) {
     return p.x >= box.min.x && p.x <= box.max.x && p.y >= box.min.y && p.y <= box.max.y && p.z >= box.min.z && p.z <= box.max.z;
 }
 
+namespace {
 std::string describeOutside(const Aabb& box, const Vec3& p) {
     const auto v = [](const Vec3& q) {
         char buf[96];
@@ -316,7 +317,7 @@ Level compileLevel(const MapFile& map, const CompileOptions& options, std::vecto
     if (!level.hasPlayerStart) compiler.warn(map.path + ": no info_player_start; the player starts at the origin");
     // Every placed thing within the level's box plus a margin: a player start or model far out
     // reaches OGRE's shadow camera as a degenerate box (an assertion), and is a broken level anyway.
-    const Aabb allowed = allowedRegion(level);
+    const Aabb allowed = placementRegion(level);
     for (const LevelEntity& e : level.entities)
         if (e.hasOrigin && !inside(allowed, e.origin))
             throw MapError(map.path + ":" + std::to_string(e.pos.line) + ": " + (e.classname.empty() ? "entity" : errorText(e.classname)) +

@@ -32,6 +32,12 @@ struct CompileOptions {
     std::function<std::pair<int, int>(const std::string&)> textureSize;
 };
 
+// The box placed things must lie in: the brushes' box grown by kPlacementMargin on each side (a
+// level of models alone: the margin around the origin). compileLevel holds every entity origin to
+// it; the game holds --start-pose, a replay's start and --smoke-at to it (settings checkInLevel).
+Aabb placementRegion(const Level& level);
+bool inside(const Aabb& box, const Vec3& p);
+
 Level compileLevel(const MapFile& map, const CompileOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 Level loadLevel(const std::string& path, const CompileOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 
