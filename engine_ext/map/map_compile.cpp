@@ -79,7 +79,7 @@ namespace {
 std::string describeOutside(const Aabb& box, const Vec3& p) {
     const auto v = [](const Vec3& q) {
         char buf[96];
-        std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", q.x, q.y, q.z);
+        std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", q.x + 0.0, q.y + 0.0, q.z + 0.0);  // no "-0"
         return std::string(buf);
     };
     return v(p) + " m in the world, outside the level's brushes plus " + shortNumber(kPlacementMargin) + " m " + v(box.min) +

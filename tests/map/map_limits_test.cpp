@@ -142,7 +142,7 @@ TEST(MapLimits, PlacedEntitiesMustLieNearTheLevel) {
     // The 64-unit cube is 2 m; the margin is 100 m (3,200 units) on each side.
     const std::string far = entity("\"classname\" \"info_player_start\"\n\"origin\" \"1e10 0 24\"");
     EXPECT_EQ(compileError(kWorld + far),
-              "t.map:12: info_player_start origin '1e10 0 24' is (3.125e+08, 0.75, -0) m in the world, outside the level's "
+              "t.map:12: info_player_start origin '1e10 0 24' is (3.125e+08, 0.75, 0) m in the world, outside the level's "
               "brushes plus 100 m (-100, -100, -102) to (102, 102, 100)");
     const std::string farModel = entity("\"classname\" \"misc_model\"\n\"origin\" \"0 -4000 0\"\n\"model\" \"a.mesh\"");
     EXPECT_NE(compileError(kWorld + farModel).find("t.map:12: misc_model origin '0 -4000 0' is (0, 0, 125) m"), std::string::npos);
