@@ -89,8 +89,8 @@ TEST(ReplayBench, ScriptErrorsExitWithFileAndLine) {
 
     std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 capture x\n";
     r = sh("'" + kGame + "' --replay " + bad + " --capture-dir /proc/obscura-cannot-write");
-    EXPECT_EQ(r.code, 1);
-    EXPECT_NE(r.out.find("cannot be written"), std::string::npos) << r.out;
+    EXPECT_EQ(r.code, 2);  // checked with the settings, before the run: a usage error
+    EXPECT_NE(r.out.find("setting 'capture-dir': folder '/proc/obscura-cannot-write' cannot be created"), std::string::npos) << r.out;
 }
 
 TEST(ReplayBench, AlteredReferenceFailsWithAnHtmlReport) {
