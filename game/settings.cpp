@@ -227,14 +227,14 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                    fail(where, "seed", q(v) + " is not an unsigned 64-bit integer");
                s.seed = x;
            }});
-    I.add({"tick-rate", "simulation ticks per second", num(&S::tickRate, "tick-rate", 10, 240)});
+    I.add({"tick-rate", "simulation ticks per second (10 to 240)", num(&S::tickRate, "tick-rate", 10, 240)});
     // 16..8192: below 16 px nothing is visible; above 8192 exceeds GL3 texture limits.
-    I.add({"width", "frame width in pixels", integer(&S::width, "width", 16, 8192)});
-    I.add({"height", "frame height in pixels", integer(&S::height, "height", 16, 8192)});
+    I.add({"width", "frame width in pixels (16 to 8192)", integer(&S::width, "width", 16, 8192)});
+    I.add({"height", "frame height in pixels (16 to 8192)", integer(&S::height, "height", 16, 8192)});
     I.add({"fullscreen", "fullscreen window", flag(&S::fullscreen, "fullscreen"), true});
     I.add({"vsync", "wait for vertical sync", flag(&S::vsync, "vsync"), true});
-    I.add({"fov", "horizontal field of view in degrees", num(&S::fov, "fov", 40, 140)});
-    I.add({"mouse-sensitivity", "mouse sensitivity (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
+    I.add({"fov", "horizontal field of view in degrees (40 to 140)", num(&S::fov, "fov", 40, 140)});
+    I.add({"mouse-sensitivity", "mouse sensitivity, 0.01 to 20 (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
     I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
     I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield (O cycles them)", [](S& s, W v, W where) {
                if (!ssao::isMode(v)) {
@@ -245,21 +245,21 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                s.ssao = v;
            }});
     // Radius 0.05..5 m: below, AO is sub-pixel at play distance; above, it darkens whole rooms.
-    I.add({"ssao-radius", "AO radius in metres", num(&S::ssaoRadius, "ssao-radius", 0.05, 5)});
-    I.add({"ssao-intensity", "AO strength", num(&S::ssaoIntensity, "ssao-intensity", 0, 4)});
+    I.add({"ssao-radius", "AO radius in metres (0.05 to 5)", num(&S::ssaoRadius, "ssao-radius", 0.05, 5)});
+    I.add({"ssao-intensity", "AO strength (0 to 4)", num(&S::ssaoIntensity, "ssao-intensity", 0, 4)});
     I.add({"ssao-resolution", "AO buffer resolution: full, half or quarter", [](S& s, W v, W where) {
                if (v != "half" && v != "full" && v != "quarter")
                    fail(where, "ssao-resolution", q(v) + ", expected full, half or quarter");
                s.ssaoResolution = v == "full" ? 1.0 : v == "half" ? 0.5 : 0.25;
            }});
     I.add({"ao-only", "show the AO term alone", flag(&S::aoOnly, "ao-only"), true});
-    I.add({"master-volume", "master volume 0..1", num(&S::masterVolume, "master-volume", 0, 1)});
-    I.add({"effects-volume", "sound effects volume 0..1 (times the master volume)", num(&S::effectsVolume, "effects-volume", 0, 1)});
-    I.add({"ssao-samples", "AO samples per pixel (1..32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
-    I.add({"debug-max-render-targets", "debug: pretend the GPU has at most N simultaneous render targets (0 = as it is)",
+    I.add({"master-volume", "master volume (0 to 1)", num(&S::masterVolume, "master-volume", 0, 1)});
+    I.add({"effects-volume", "sound effects volume, 0 to 1 (times the master volume)", num(&S::effectsVolume, "effects-volume", 0, 1)});
+    I.add({"ssao-samples", "AO samples per pixel (1 to 32)", integer(&S::ssaoSamples, "ssao-samples", 1, 32)});
+    I.add({"debug-max-render-targets", "debug: pretend the GPU has at most N simultaneous render targets (0 = as it is) (0 to 8)",
            integer(&S::debugMaxRenderTargets, "debug-max-render-targets", 0, 8)});
     I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});
-    I.add({"ticks", "run this many simulation ticks, then exit (headless default 300)", [](S& s, W v, W where) {
+    I.add({"ticks", "run this many simulation ticks (0 to 1000000000), then exit (headless default 300)", [](S& s, W v, W where) {
                s.ticks = static_cast<long>(parseInteger(v, 0, 1e9, where, "ticks"));
            }});
     I.add({"screenshot", "write the last rendered frame to this PNG file", [](S& s, W v, W where) {
