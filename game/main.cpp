@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
             }
             settings.configFile = user;
         }
+        // Outputs are checked before anything runs: a run must not end by failing to write.
+        obscura::checkOutputsWritable(settings);
         obscura::GameApp app(std::move(settings), parser);
         return app.run();
     } catch (const obscura::replay::ScriptError& e) {

@@ -11,6 +11,9 @@ ReplayTick ReplayPlayer::take(std::int64_t tick) {
         out.inputs.push_back(it->second);
         it = pending_.erase(it);
     }
+    // The `setting` headers: before anything of the first tick.
+    if (tick == 0)
+        for (const replay::Command& c : script_.settings) out.settings.push_back(&c);
     using T = replay::Command::Type;
     using A = replay::Command::Action;
     for (; next_ < script_.commands.size() && script_.commands[next_].tick <= tick; ++next_) {

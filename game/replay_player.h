@@ -4,7 +4,7 @@
 //
 // Tick semantics: commands at tick t act before simulation step t; `capture` and `hash` at tick t
 // act on the state after step t and the frame rendered from it. A `key ... tap` presses at t and
-// releases at t + 1.
+// releases at t + 1. The script's `setting` headers come first in tick 0's settings.
 #pragma once
 
 #include "replay/replay_script.h"

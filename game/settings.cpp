@@ -1,6 +1,8 @@
 // Settings table, parsing and validation. See settings.h.
 #include "settings.h"
 
+#include "map/input_file.h"
+#include "map/map_compile.h"
 #include "replay/replay_script.h"
 #include "frame/frame_knobs.h"
 #include "ssao/ssao_knobs.h"
@@ -8,12 +10,20 @@
 
 #include <boost/program_options.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <sstream>
+#include <unistd.h>
 
 namespace po = boost::program_options;
 
@@ -40,35 +50,50 @@ std::string trim(const std::string& s) {
     return s.substr(b, e - b + 1);
 }
 
+constexpr const char* kCommandLine = "command line";
+// Paths from the command line or a config file (PATH_MAX is 4096 on Linux).
+constexpr std::size_t kMaxPath = 4096;
+
 [[noreturn]] void fail(const std::string& where, const std::string& key, const std::string& problem) {
     throw SettingsError(where + ": setting '" + key + "': " + problem);
+}
+
+// A value echoed in an error: escaped and cut to a readable length.
+std::string q(const std::string& v) { return "'" + errorText(v) + "'"; }
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.15g", v);
+    return buf;
 }
 
 bool parseBool(const std::string& v, const std::string& where, const std::string& key) {
     if (v == "1" || v == "true" || v == "yes" || v == "on") return true;
     if (v == "0" || v == "false" || v == "no" || v == "off") return false;
-    fail(where, key, "'" + v + "' is not a boolean, expected true/false/1/0/yes/no/on/off");
+    fail(where, key, q(v) + " is not a boolean, expected true/false/1/0/yes/no/on/off");
 }
 
+// A finite decimal number, locale-free (std::from_chars: no hex, no "inf"/"nan", no blanks).
 double parseNumber(const std::string& v, const std::string& where, const std::string& key) {
-    errno = 0;
-    char* end = nullptr;
-    const double d = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end != '\0' || errno == ERANGE || d != d)
-        fail(where, key, "'" + v + "' is not a number");
+    double d = 0;
+    const char* b = v.data() + (!v.empty() && v[0] == '+' ? 1 : 0);
+    const auto r = std::from_chars(b, v.data() + v.size(), d);
+    if (v.empty() || r.ec != std::errc() || r.ptr != v.data() + v.size() || !std::isfinite(d))
+        fail(where, key, q(v) + " is not a number");
     return d;
 }
 
-// Numbers out of range are clamped with a warning (a knob typed too large should still run).
-double parseClamped(const std::string& v, double lo, double hi, const std::string& where, const std::string& key) {
+// A number in [lo, hi]; outside it is an error (a knob typed wrong should be said so, not clamped).
+double parseRanged(const std::string& v, double lo, double hi, const std::string& where, const std::string& key) {
     const double d = parseNumber(v, where, key);
-    if (d < lo || d > hi) {
-        const double c = d < lo ? lo : hi;
-        std::cerr << "warning: " << where << ": setting '" << key << "' = " << v << " is outside [" << lo << ", "
-                  << hi << "], clamped to " << c << "\n";
-        return c;
-    }
+    if (d < lo || d > hi) fail(where, key, q(v) + " is out of range, expected " + number(lo) + " to " + number(hi));
     return d;
+}
+
+long long parseInteger(const std::string& v, double lo, double hi, const std::string& where, const std::string& key) {
+    const double d = parseRanged(v, lo, hi, where, key);
+    if (d != std::floor(d)) fail(where, key, q(v) + " is not a whole number");
+    return static_cast<long long>(d);
 }
 
 }  // namespace
@@ -165,55 +190,86 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
         return [m, name](S& s, W v, W where) { s.*m = parseBool(v, where, name); };
     };
     auto num = [](double S::*m, const std::string& name, double lo, double hi) {
-        return [m, name, lo, hi](S& s, W v, W where) { s.*m = parseClamped(v, lo, hi, where, name); };
+        return [m, name, lo, hi](S& s, W v, W where) { s.*m = parseRanged(v, lo, hi, where, name); };
     };
     auto integer = [](int S::*m, const std::string& name, double lo, double hi) {
-        return [m, name, lo, hi](S& s, W v, W where) { s.*m = static_cast<int>(parseClamped(v, lo, hi, where, name)); };
+        return [m, name, lo, hi](S& s, W v, W where) { s.*m = static_cast<int>(parseInteger(v, lo, hi, where, name)); };
     };
-    // A knob's range comes from its table (core/knob.h).
+    // A path the game writes: not empty, at most kMaxPath characters.
+    auto path = [](std::string S::*m, const std::string& name) {
+        return [m, name](S& s, W v, W where) {
+            if (v.empty()) fail(where, name, "expected a path");
+            if (v.size() > kMaxPath) fail(where, name, q(v) + " is longer than " + std::to_string(kMaxPath) + " characters");
+            s.*m = v;
+        };
+    };
+    // A knob's range comes from its table (core/knob.h), in its help too.
+    auto rangeText = [](const Knob& k) {
+        std::ostringstream os;
+        os << "(" << k.min << " to " << k.max << ")";
+        return os.str();
+    };
     auto knob = [num](double S::*m, const Knob& k) { return num(m, k.name, k.min, k.max); };
 
-    I.add({"level", "level .map file (default: media/levels/arena.map)", str(&S::level)});
-    I.add({"map-scale", "map units per metre (0 = worldspawn 'units_per_metre' or 32)", num(&S::mapScale, "map-scale", 0, 1024)});
+    I.add({"level", "level .map file (default: media/levels/arena.map)", [](S& s, W v, W where) {
+               if (v.empty()) fail(where, "level", "expected a .map file");
+               if (v.size() > kMaxPath) fail(where, "level", q(v) + " is longer than " + std::to_string(kMaxPath) + " characters");
+               // From a file: checked here, so the error names the config line. (The command line's
+               // --level is opened by the loader, whose error names the file.)
+               if (where != kCommandLine) {
+                   std::error_code ec;
+                   const auto st = std::filesystem::status(v, ec);
+                   if (!std::filesystem::exists(st)) fail(where, "level", "map file " + q(v) + " not found");
+                   if (!std::filesystem::is_regular_file(st)) fail(where, "level", q(v) + " is not a regular file, expected a .map file");
+               }
+               s.level = v;
+           }});
+    I.add({"map-scale", "map units per metre: 0 (worldspawn 'units_per_metre' or 32) or 1 to 1024", [](S& s, W v, W where) {
+               const double d = parseNumber(v, where, "map-scale");
+               if (d != 0 && !(d >= 1 && d <= 1024)) fail(where, "map-scale", q(v) + " is out of range, expected 0 (from the map) or 1 to 1024");
+               s.mapScale = d;
+           }});
     I.add({"seed", "simulation RNG seed", [](S& s, W v, W where) {
                char* end = nullptr;
                errno = 0;
                const unsigned long long x = std::strtoull(v.c_str(), &end, 0);
-               if (v.empty() || *end || errno == ERANGE || v[0] == '-') fail(where, "seed", "'" + v + "' is not an unsigned integer");
+               if (v.empty() || *end || errno == ERANGE || !std::isdigit(static_cast<unsigned char>(v[0])))
+                   fail(where, "seed", q(v) + " is not an unsigned 64-bit integer");
                s.seed = x;
            }});
-    I.add({"tick-rate", "simulation ticks per second", num(&S::tickRate, "tick-rate", 10, 240)});
+    I.add({"tick-rate", "simulation ticks per second (10 to 240)", num(&S::tickRate, "tick-rate", 10, 240)});
     // 16..8192: below 16 px nothing is visible; above 8192 exceeds GL3 texture limits.
-    I.add({"width", "frame width in pixels", integer(&S::width, "width", 16, 8192)});
-    I.add({"height", "frame height in pixels", integer(&S::height, "height", 16, 8192)});
+    I.add({"width", "frame width in pixels (16 to 8192)", integer(&S::width, "width", 16, 8192)});
+    I.add({"height", "frame height in pixels (16 to 8192)", integer(&S::height, "height", 16, 8192)});
     I.add({"fullscreen", "fullscreen window", flag(&S::fullscreen, "fullscreen"), true});
     I.add({"vsync", "wait for vertical sync", flag(&S::vsync, "vsync"), true});
-    I.add({"fov", "horizontal field of view in degrees", num(&S::fov, "fov", 40, 140)});
-    I.add({"mouse-sensitivity", "mouse sensitivity (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
+    I.add({"fov", "horizontal field of view in degrees (40 to 140)", num(&S::fov, "fov", 40, 140)});
+    I.add({"mouse-sensitivity", "mouse sensitivity, 0.01 to 20 (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
     I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
     I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield (O cycles them)", [](S& s, W v, W where) {
                if (!ssao::isMode(v)) {
                    std::string all;
                    for (const auto& m : ssao::modeNames()) all += (all.empty() ? "" : ", ") + m;
-                   fail(where, "ssao", "unknown mode '" + v + "', expected one of " + all);
+                   fail(where, "ssao", "unknown mode " + q(v) + ", expected one of " + all);
                }
                s.ssao = v;
            }});
-    I.add({ssao::kRadius.name, "AO radius in metres", knob(&S::ssaoRadius, ssao::kRadius)});
-    I.add({ssao::kIntensity.name, "AO strength", knob(&S::ssaoIntensity, ssao::kIntensity)});
+    I.add({ssao::kRadius.name, "AO radius in metres " + rangeText(ssao::kRadius), knob(&S::ssaoRadius, ssao::kRadius)});
+    I.add({ssao::kIntensity.name, "AO strength " + rangeText(ssao::kIntensity), knob(&S::ssaoIntensity, ssao::kIntensity)});
     I.add({"ssao-resolution", "AO buffer resolution: full, half or quarter", [](S& s, W v, W where) {
                if (v != "half" && v != "full" && v != "quarter")
-                   fail(where, "ssao-resolution", "'" + v + "', expected full, half or quarter");
+                   fail(where, "ssao-resolution", q(v) + ", expected full, half or quarter");
                s.ssaoResolution = v == "full" ? 1.0 : v == "half" ? 0.5 : 0.25;
            }});
     I.add({"ao-only", "show the AO term alone", flag(&S::aoOnly, "ao-only"), true});
-    I.add({"master-volume", "master volume 0..1", num(&S::masterVolume, "master-volume", 0, 1)});
-    I.add({"effects-volume", "sound effects volume 0..1 (times the master volume)", num(&S::effectsVolume, "effects-volume", 0, 1)});
-    I.add({ssao::kSamples.name, "AO samples per pixel (1.." + std::to_string(static_cast<int>(ssao::kSamples.max)) + ")",
+    I.add({"master-volume", "master volume (0 to 1)", num(&S::masterVolume, "master-volume", 0, 1)});
+    I.add({"effects-volume", "sound effects volume, 0 to 1 (times the master volume)", num(&S::effectsVolume, "effects-volume", 0, 1)});
+    I.add({ssao::kSamples.name, "AO samples per pixel " + rangeText(ssao::kSamples),
            integer(&S::ssaoSamples, ssao::kSamples.name, ssao::kSamples.min, ssao::kSamples.max)});
     I.add({"view", "what the frame shows at the start: scene, ao, albedo, normal, depth, direct-light, hdr-light (V cycles)",
            str(&S::view)});
-    I.add({frame::kExposure.name, "multiplies the light before the tone map", knob(&S::exposure, frame::kExposure)});
+    I.add({frame::kExposure.name, "multiplies the light before the tone map " + rangeText(frame::kExposure),
+           knob(&S::exposure, frame::kExposure)});
     I.add({"debug-unsupported-formats", "debug: pretend these render-target formats are missing (comma-separated OGRE "
                                         "names, e.g. PF_FLOAT32_GR; 3d: for volume textures)",
            [](S& s, W v, W) {
@@ -222,41 +278,47 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                for (std::string f; std::getline(in, f, ',');)
                    if (!f.empty()) s.debugUnsupportedFormats.push_back(f);
            }});
-    I.add({"debug-max-render-targets", "debug: pretend the GPU has at most N simultaneous render targets (0 = as it is)",
+    I.add({"debug-max-render-targets", "debug: pretend the GPU has at most N simultaneous render targets (0 = as it is) (0 to 8)",
            integer(&S::debugMaxRenderTargets, "debug-max-render-targets", 0, 8)});
     I.add({"headless", "no visible window: render to an offscreen texture (needs an X server, e.g. Xvfb)", flag(&S::headless, "headless"), true});
-    I.add({"ticks", "run this many simulation ticks, then exit (headless default 300)", [](S& s, W v, W where) {
-               s.ticks = static_cast<long>(parseClamped(v, 0, 1e9, where, "ticks"));
+    I.add({"ticks", "run this many simulation ticks (0 to 1000000000), then exit (headless default 300)", [](S& s, W v, W where) {
+               s.ticks = static_cast<long>(parseInteger(v, 0, 1e9, where, "ticks"));
            }});
-    I.add({"screenshot", "write the last rendered frame to this PNG file", str(&S::screenshot)});
-    I.add({"replay", "play this replay script headless (implies --headless)", str(&S::replay)});
-    I.add({"capture-dir", "folder for a replay's `capture <name>` frames (<name>.png)", str(&S::captureDir)});
-    I.add({"record", "record this session's inputs as a replay script to this file", str(&S::record)});
-    I.add({"timedemo", "play this replay script rendering every tick as fast as possible; print frame times", str(&S::timedemo)});
-    I.add({"config", "config file of 'key = value' lines (same names as these options)", str(&S::configFile)});
-    I.add({"data-dir", "folder holding media/ and shaders/", str(&S::dataDir)});
-    I.add({"log", "OGRE log file (default: obscura.log in the cache folder)", str(&S::logFile)});
+    I.add({"screenshot", "write the last rendered frame to this PNG file", [](S& s, W v, W where) {
+               std::string ext = std::filesystem::path(v).extension().string();
+               std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+               if (ext != ".png") fail(where, "screenshot", q(v) + " does not end in .png (screenshots are PNG files)");
+               if (v.size() > kMaxPath) fail(where, "screenshot", q(v) + " is longer than " + std::to_string(kMaxPath) + " characters");
+               s.screenshot = v;
+           }});
+    I.add({"replay", "play this replay script headless (implies --headless)", path(&S::replay, "replay")});
+    I.add({"capture-dir", "folder for a replay's `capture <name>` frames (<name>.png)", path(&S::captureDir, "capture-dir")});
+    I.add({"record", "record this session's inputs as a replay script to this file", path(&S::record, "record")});
+    I.add({"timedemo", "play this replay script rendering every tick as fast as possible; print frame times", path(&S::timedemo, "timedemo")});
+    I.add({"config", "config file of 'key = value' lines (same names as these options)", path(&S::configFile, "config")});
+    I.add({"data-dir", "folder holding media/ and shaders/", path(&S::dataDir, "data-dir")});
+    I.add({"log", "OGRE log file (default: obscura.log in the cache folder)", path(&S::logFile, "log")});
     I.add({"hud", "draw the crosshair and status text", flag(&S::hud, "hud"), true});
-    // A text of `count` numbers, kept as written ("x y z yaw pitch").
-    auto numbers = [](std::string S::*m, const std::string& name, int count, const std::string& expected) {
-        return [m, name, count, expected](S& s, W v, W where) {
-            std::istringstream is(v);
-            double x;
-            for (int i = 0; i < count; ++i)
-                if (!(is >> x)) fail(where, name, "'" + v + "', expected '" + expected + "'");
-            s.*m = v;
-        };
-    };
+    // Poses and points share the replay format's checks (finite, x y z within +-300 km, yaw, pitch),
+    // kept as written; checkInLevel() then holds them to the level's box.
     I.add({"start-pose", "start with the eye at 'x y z yaw pitch' (metres, degrees) instead of the player start",
-           numbers(&S::startPose, "start-pose", 5, "x y z yaw pitch")});
+           [](S& s, W v, W where) {
+               const std::string problem = replay::checkPose(v);
+               if (!problem.empty()) fail(where, "start-pose", problem);
+               s.startPose = v;
+           }});
     I.add({"smoke-at", "release a smoke grenade's cloud at 'x y z' (metres): at the start, or when a replay sets it",
-           numbers(&S::smokeAt, "smoke-at", 3, "x y z")});
+           [](S& s, W v, W where) {
+               const std::string problem = replay::checkPoint(v);
+               if (!problem.empty()) fail(where, "smoke-at", problem);
+               s.smokeAt = v;
+           }});
     I.add({"debug-panel", "show the ImGui debug panel at start", flag(&S::showDebugPanel, "debug-panel"), true});
     for (int a = 0; a < static_cast<int>(Action::Count); ++a) {
         const auto action = static_cast<Action>(a);
         const std::string name = std::string("bind-") + actionName(action);
         I.add({name, std::string("key for '") + actionName(action) + "'", [action, name](S& s, W v, W where) {
-                   if (!isKeyName(v)) fail(where, name, "unknown key '" + v + "'");
+                   if (!isKeyName(v)) fail(where, name, "unknown key " + q(v));
                    s.bindings[action] = v;
                }});
     }
@@ -289,8 +351,61 @@ std::string SettingsParser::help() const {
 
 void SettingsParser::apply(const std::string& key, const std::string& value, Settings& s, const std::string& where) const {
     const Option* o = impl_->find(key);
-    if (!o) throw SettingsError(where + ": unknown setting '" + key + "'");
+    if (!o) throw SettingsError(where + ": unknown setting " + q(key));
+    // At run time (the menu, a replay's `set`) a key bound to another action swaps with it: the
+    // bindings stay one key per action, as the files and command line must give them.
+    std::optional<Action> action;
+    std::string previous;
+    if (key.rfind("bind-", 0) == 0 && (action = actionFromName(key.substr(5)))) previous = s.bindings[*action];
     o->apply(s, value, where);
+    if (!action) return;
+    for (auto& [other, bound] : s.bindings)
+        if (other != *action && bound == s.bindings[*action]) bound = previous;
+}
+
+void SettingsParser::parseConfigText(const std::string& text, const std::string& fileName, Settings& out) const {
+    std::istringstream in(text);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        line = trim(line);
+        if (line.empty()) continue;
+        const auto eq = line.find('=');
+        const std::string where = fileName + ":" + std::to_string(n);
+        if (eq == std::string::npos) throw SettingsError(where + ": expected 'key = value', got " + q(line));
+        const std::string key = trim(line.substr(0, eq));
+        if (key == "config") throw SettingsError(where + ": a config file cannot name another config file");
+        const Option* o = impl_->find(key);
+        if (!o) throw SettingsError(where + ": unknown setting " + q(key));
+        o->apply(out, trim(line.substr(eq + 1)), where);
+        out.sources[key] = where;
+    }
+}
+
+void checkBindings(const Settings& s) {
+    std::map<std::string, Action> owner;
+    for (const auto& [action, key] : s.bindings) {
+        const auto [it, fresh] = owner.emplace(key, action);
+        if (fresh) continue;
+        // Name the one a file or the command line set (a default never collides with a default).
+        const auto source = [&](Action a) {
+            const auto f = s.sources.find(std::string("bind-") + actionName(a));
+            return f == s.sources.end() ? std::string() : f->second;
+        };
+        // The later of the two: the command line comes after the config file, lines in order.
+        const auto order = [&](Action a) {
+            const std::string w = source(a);
+            if (w.empty()) return -1L;
+            if (w == kCommandLine) return std::numeric_limits<long>::max();
+            return std::strtol(w.c_str() + w.rfind(':') + 1, nullptr, 10);
+        };
+        Action culprit = action, other = it->second;
+        if (order(culprit) < order(other)) std::swap(culprit, other);
+        const std::string otherFrom = source(other).empty() ? "by default" : "at " + source(other);
+        throw SettingsError(source(culprit) + ": setting 'bind-" + actionName(culprit) + "': key " + q(key) +
+                            " is already bound to '" + actionName(other) + "' (" + otherFrom + "); one key per action");
+    }
 }
 
 bool SettingsParser::parse(int argc, const char* const argv[], Settings& out) {
@@ -298,43 +413,105 @@ bool SettingsParser::parse(int argc, const char* const argv[], Settings& out) {
     po::parsed_options parsed(&impl_->desc);
     try {
         parsed = po::command_line_parser(argc, argv).options(impl_->desc).run();
+        po::store(parsed, vm);
     } catch (const po::error& e) {
-        throw SettingsError(std::string("command line: ") + e.what() + " (see --help)");
+        throw SettingsError(std::string(kCommandLine) + ": " + errorText(e.what(), 200) + " (see --help)");
     }
-    po::store(parsed, vm);
     if (vm.count("help")) {
         std::cout << help();
         return false;
     }
+    for (const auto& opt : parsed.options)
+        if (opt.position_key >= 0 || opt.string_key.empty())
+            throw SettingsError(std::string(kCommandLine) + ": unexpected argument " +
+                                q(opt.original_tokens.empty() ? std::string() : opt.original_tokens.front()) +
+                                ": settings are given as --name value (see --help)");
 
     // The config file first, then the command line on top of it.
     std::string config;
     if (vm.count("config")) config = vm["config"].as<std::string>();
     if (!config.empty()) {
-        std::ifstream in(config);
-        if (!in) throw SettingsError(config + ": cannot open config file");
-        std::string line;
-        for (int n = 1; std::getline(in, line); ++n) {
-            const auto hash = line.find('#');
-            if (hash != std::string::npos) line.resize(hash);
-            line = trim(line);
-            if (line.empty()) continue;
-            const auto eq = line.find('=');
-            const std::string where = config + ":" + std::to_string(n);
-            if (eq == std::string::npos) throw SettingsError(where + ": expected 'key = value', got '" + line + "'");
-            const std::string key = trim(line.substr(0, eq));
-            if (key == "config") throw SettingsError(where + ": a config file cannot name another config file");
-            apply(key, trim(line.substr(eq + 1)), out, where);
-        }
+        std::string text, error;
+        if (!readInputFile(config, kMaxConfigBytes, "config file", text, error)) throw SettingsError(error);
+        parseConfigText(text, config, out);
     }
     for (const auto& opt : parsed.options) {
         if (opt.string_key == "help") continue;
         // A flag given bare (--headless) arrives with no value: its implicit value is true.
         const Option* o = impl_->find(opt.string_key);
         const std::string value = opt.value.empty() ? (o && o->isFlag ? "true" : "") : opt.value.front();
-        apply(opt.string_key, value, out, "command line");
+        if (!o) throw SettingsError(std::string(kCommandLine) + ": unknown setting " + q(opt.string_key));
+        o->apply(out, value, kCommandLine);
+        out.sources[opt.string_key] = kCommandLine;
     }
+    checkBindings(out);
     return true;
+}
+
+std::vector<std::pair<std::string, std::string>> inputSettingValues(const Settings& s) {
+    std::vector<std::pair<std::string, std::string>> v = {{"mouse-sensitivity", number(s.mouseSensitivity)},
+                                                          {"invert-mouse", s.invertMouse ? "true" : "false"}};
+    for (const auto& [action, key] : s.bindings) v.emplace_back(std::string("bind-") + actionName(action), key);
+    return v;
+}
+
+namespace {
+// Proves a file can be created in `dir` (a probe, removed again: access() says yes to root even
+// where a read-only mount will refuse); `create` makes the folder first, as captures do.
+std::string writableFolderProblem(const std::filesystem::path& dir, bool create) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path folder = dir.empty() ? fs::path(".") : dir;
+    if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) return "is not a folder";
+    if (create) fs::create_directories(folder, ec);
+    if (ec) return "cannot be created (" + ec.message() + ")";
+    if (!fs::is_directory(folder, ec)) return "does not exist";
+    const fs::path probe = folder / (".obscura-write-test-" + std::to_string(::getpid()));
+    const bool ok = static_cast<bool>(std::ofstream(probe.string()));
+    fs::remove(probe, ec);
+    return ok ? std::string() : "cannot be written";
+}
+
+std::string sourceOf(const Settings& s, const std::string& key) {
+    const auto it = s.sources.find(key);
+    return it == s.sources.end() ? std::string(kCommandLine) : it->second;
+}
+}  // namespace
+
+void checkOutputsWritable(const Settings& s) {
+    namespace fs = std::filesystem;
+    const auto file = [&](const std::string& key, const std::string& path) {
+        if (path.empty()) return;
+        std::error_code ec;
+        if (fs::is_directory(path, ec)) fail(sourceOf(s, key), key, q(path) + " is a folder, expected a file name");
+        const fs::path parent = fs::path(path).parent_path();
+        const std::string problem = writableFolderProblem(parent, false);
+        if (!problem.empty())
+            fail(sourceOf(s, key), key, "cannot write " + q(path) + ": its folder " + q(parent.empty() ? "." : parent.string()) + " " + problem);
+    };
+    file("screenshot", s.screenshot);
+    file("record", s.record);
+    if (!s.replay.empty()) {
+        const std::string problem = writableFolderProblem(s.captureDir, true);
+        if (!problem.empty()) fail(sourceOf(s, "capture-dir"), "capture-dir", "folder " + q(s.captureDir) + " " + problem);
+    }
+}
+
+void checkInLevel(const Settings& s, const map::Level& level) {
+    const auto check = [&](const std::string& key, const std::string& text, const std::string& where) {
+        if (text.empty()) return;
+        std::istringstream is(text);
+        Vec3 p;
+        is >> p.x >> p.y >> p.z;
+        const map::Aabb box = map::placementRegion(level);
+        if (!map::inside(box, p))
+            fail(where, key,
+                 "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ") is outside " + errorText(level.sourcePath, 200) +
+                     ": its brushes plus " + number(map::kPlacementMargin) + " m reach (" + number(box.min.x) + ", " + number(box.min.y) +
+                     ", " + number(box.min.z) + ") to (" + number(box.max.x) + ", " + number(box.max.y) + ", " + number(box.max.z) + ")");
+    };
+    check("start-pose", s.startPose, sourceOf(s, "start-pose"));
+    check("smoke-at", s.smokeAt, sourceOf(s, "smoke-at"));
 }
 
 }  // namespace obscura

@@ -4,13 +4,16 @@
 #pragma once
 
 #include "frame/frame_knobs.h"
+#include "map/level.h"
 #include "ssao/ssao_knobs.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace obscura {
@@ -83,6 +86,9 @@ struct Settings {
     // Release a smoke grenade's cloud at "x y z" (metres) when the level starts, or at the tick a
     // replay `set`s it (tests, screenshots).
     std::string smokeAt;
+    // Where each setting given by a file or the command line came from ("file:line", "command
+    // line"), for errors found after parsing (duplicate bindings, a pose outside the level).
+    std::map<std::string, std::string> sources;
 
     Settings();  // fills default bindings
 };
@@ -97,6 +103,25 @@ std::string defaultConfigPath();
 // if a key repeats), missing keys appended; comments, blank lines and every other key are kept.
 std::string updateConfigText(const std::string& text, const std::vector<std::pair<std::string, std::string>>& values);
 
+// A config file is read only if it is a regular file of at most this size.
+constexpr std::size_t kMaxConfigBytes = 1u << 20;
+
+// Throws SettingsError if two actions share a key, naming the setting (and its file:line) that
+// made the second binding. parse() calls it once everything is read, so a file may swap two keys.
+void checkBindings(const Settings& s);
+
+// The settings that change how input becomes movement, as `key value` pairs: mouse-sensitivity,
+// invert-mouse and every bind-*. A recording carries them (replay `setting` headers).
+std::vector<std::pair<std::string, std::string>> inputSettingValues(const Settings& s);
+
+// Before a run starts: --screenshot's and --record's folders can take a new file, and a replay's
+// --capture-dir can be made and written. Throws SettingsError naming the setting and the path.
+void checkOutputsWritable(const Settings& s);
+
+// Once the level is loaded: --start-pose (or a replay's start) and --smoke-at lie within the
+// level's brushes plus map::kPlacementMargin. Throws SettingsError naming where the value came from.
+void checkInLevel(const Settings& s, const map::Level& level);
+
 class SettingsParser {
 public:
     SettingsParser();
@@ -105,7 +130,11 @@ public:
     // Parses argv, then the config file (explicit --config, or none). Command-line values win.
     // Returns false if --help was printed.
     bool parse(int argc, const char* const argv[], Settings& out);
-    // Applies one `key value` at run time (replay `set`, the menu). Throws SettingsError.
+    // The text of a config file (`key = value` lines, # comments) applied onto `out`; errors name
+    // fileName:line. parse() reads the file (size-capped) and calls this.
+    void parseConfigText(const std::string& text, const std::string& fileName, Settings& out) const;
+    // Applies one `key value` at run time (replay `set`, the menu). Throws SettingsError. A
+    // bind-* to a key another action holds swaps the two actions' keys.
     void apply(const std::string& key, const std::string& value, Settings& s, const std::string& where) const;
     bool isKnown(const std::string& key) const;
     // Known and changeable while the game runs (not level, resolution, paths...).

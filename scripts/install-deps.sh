@@ -19,6 +19,8 @@ PACKAGES=(
   fonts-dejavu-core
   # the level generator's self-check test (tools/levelgen, stdlib only)
   python3
+  # the fuzz targets' short run in the suite (tools/fuzz: libFuzzer, ASan, UBSan)
+  clang
 )
 
 missing=()

@@ -134,22 +134,10 @@ void Frame::add(Technique& technique) {
     builtKey_.clear();
 }
 
-void Frame::remove(Technique& technique) {
-    techniques_.erase(std::remove(techniques_.begin(), techniques_.end(), &technique), techniques_.end());
-    off_.erase(&technique);
-    removeAll();
-}
-
 std::string Frame::key() const {
     std::string k;
     for (const Technique* t : techniques_) k += t->compositor() + "|" + t->configuration() + ";";
     return k;
-}
-
-bool Frame::running(const Technique& technique) const {
-    for (const auto& e : chain_)
-        if (e->technique == &technique) return true;
-    return false;
 }
 
 std::string Frame::offReason(const Technique& technique) const {

@@ -47,9 +47,8 @@ public:
     Frame(const Frame&) = delete;
     Frame& operator=(const Frame&) = delete;
 
-    // A technique the game made (not owned; it must outlive the frame or be removed).
+    // A technique the game made (not owned; it must outlive the frame).
     void add(Technique& technique);
-    void remove(Technique& technique);
     void setExposure(float exposure) { settings_.exposure = exposure; }
     // What the frame shows: "scene", "ao" (the AO alone), or a technique's debug view.
     std::vector<std::string> views() const;
@@ -58,9 +57,7 @@ public:
     // Rebuilds the chain when a technique's compositor or configuration changed. Call once a
     // frame before rendering (never from inside a render).
     void update(float time);
-    // Whether the technique is in the frame now (false when its stage was turned off here).
-    bool running(const Technique& technique) const;
-    // The reason it was turned off, empty if it runs.
+    // Why the technique's stage was turned off here for its current configuration; empty if not.
     std::string offReason(const Technique& technique) const;
 
     // Ogre::MaterialManager::Listener: the G-buffer fallback for materials without a GBuffer technique.

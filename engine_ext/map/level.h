@@ -95,6 +95,7 @@ struct LevelModel {
     double yaw = 0;
     double scale = 1;
     int entityIndex = 0;
+    SourcePos pos;  // the misc_model entity in the .map
 };
 
 struct Level {

@@ -2,11 +2,13 @@
 #include "map/map_compile.h"
 
 #include "map/brush_geometry.h"
+#include "map/input_file.h"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace obscura::map {
@@ -46,6 +48,42 @@ bool parseVec(const std::string& s, Vec3& out) {
     if (!parseNumbers(s, v, 3)) return false;
     out = {v[0], v[1], v[2]};
     return true;
+}
+
+std::string shortNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.15g", v);
+    return buf;
+}
+
+}  // namespace
+
+Aabb placementRegion(const Level& level) {
+    Aabb a;
+    if (level.bounds.empty()) {
+        a.min = a.max = Vec3{0, 0, 0};
+    } else {
+        a = level.bounds;
+    }
+    const Vec3 m{kPlacementMargin, kPlacementMargin, kPlacementMargin};
+    a.min = a.min - m;
+    a.max = a.max + m;
+    return a;
+}
+
+bool inside(const Aabb& box, const Vec3& p) {
+    return p.x >= box.min.x && p.x <= box.max.x && p.y >= box.min.y && p.y <= box.max.y && p.z >= box.min.z && p.z <= box.max.z;
+}
+
+namespace {
+std::string describeOutside(const Aabb& box, const Vec3& p) {
+    const auto v = [](const Vec3& q) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", q.x + 0.0, q.y + 0.0, q.z + 0.0);  // no "-0"
+        return std::string(buf);
+    };
+    return v(p) + " m in the world, outside the level's brushes plus " + shortNumber(kPlacementMargin) + " m " + v(box.min) +
+           " to " + v(box.max);
 }
 
 enum class BrushClass { Solid, NonSolid, Trigger };
@@ -147,10 +185,19 @@ public:
     }
 
 private:
+    [[noreturn]] void failAt(const SourcePos& at, const std::string& problem) const {
+        throw MapError(map_.path + ":" + std::to_string(at.line) + ": " + problem);
+    }
+
     void addLight(const MapEntity& me, const LevelEntity& e) {
         LevelLight l;
         l.position = e.origin;
-        l.intensity = number(me, me.has("light") ? "light" : "_light", l.intensity);
+        const char* key = me.has("light") ? "light" : "_light";
+        l.intensity = number(me, key, l.intensity);
+        // The radius follows the value; OGRE takes it as a float attenuation range.
+        if (std::fabs(l.intensity) > kMaxLightValue)
+            failAt(me.pos, "light '" + std::string(key) + "' value '" + errorText(me.value(key)) + "' is out of range, expected -" +
+                               shortNumber(kMaxLightValue) + " to " + shortNumber(kMaxLightValue));
         Vec3 col;
         if (vec(me, me.has("_color") ? "_color" : "color", col)) {
             if (col.x > 1 || col.y > 1 || col.z > 1) col = col / 255.0;  // 0..255 triplet
@@ -165,8 +212,21 @@ private:
         m.mesh = me.value("model");
         m.origin = e.origin;
         m.yaw = e.yaw + kPi / 2.0;  // models face +X in their own frame, as Quake models do
-        m.scale = number(me, me.has("scale") ? "scale" : "modelscale", 1.0);
+        // The scale reaches OGRE as a float node scale and divides in its bounds: it must be a
+        // finite number in [kMinModelScale, kMaxModelScale] (0, a denormal or 1e39 would assert).
+        const char* scaleKey = me.has("scale") ? "scale" : "modelscale";
+        const std::string& scaleText = me.value(scaleKey);
+        if (!scaleText.empty()) {
+            double v = 0;
+            if (!parseNumbers(scaleText, &v, 1) || !(v >= kMinModelScale && v <= kMaxModelScale))
+                failAt(me.pos, "misc_model '" + std::string(scaleKey) + "' value '" + errorText(scaleText) +
+                                   "' is not a number from " + shortNumber(kMinModelScale) + " to " + shortNumber(kMaxModelScale));
+            m.scale = v;
+        }
+        if (m.mesh.size() > kMaxModelName)
+            failAt(me.pos, "misc_model 'model' value '" + errorText(m.mesh) + "' is longer than " + std::to_string(kMaxModelName) + " characters");
         m.entityIndex = entityIndex;
+        m.pos = me.pos;
         if (m.mesh.empty()) warnAt(me.pos, "misc_model without a 'model' key");
         else level_.models.push_back(m);
     }
@@ -239,17 +299,29 @@ Level compileLevel(const MapFile& map, const CompileOptions& options, std::vecto
     if (warnings) warnings->insert(warnings->end(), map.warnings.begin(), map.warnings.end());
 
     double scale = options.unitsPerMetre;
-    if (scale <= 0 && !map.entities.empty()) {
+    if (scale != 0 && !(scale >= kMinUnitsPerMetre && scale <= kMaxUnitsPerMetre))
+        throw MapError(map.path + ": units per metre " + shortNumber(scale) + " is out of range, expected " +
+                       shortNumber(kMinUnitsPerMetre) + " to " + shortNumber(kMaxUnitsPerMetre));
+    if (scale == 0 && !map.entities.empty()) {
         const std::string& s = map.entities.front().value("units_per_metre");
-        if (!s.empty() && (!parseNumbers(s, &scale, 1) || !(scale > 0)) && warnings)
-            warnings->push_back(map.path + ": worldspawn units_per_metre '" + s + "' is not a positive number; using 32");
+        if (!s.empty() && (!parseNumbers(s, &scale, 1) || !(scale >= kMinUnitsPerMetre && scale <= kMaxUnitsPerMetre)))
+            throw MapError(map.path + ":" + std::to_string(map.entities.front().pos.line) + ": worldspawn 'units_per_metre' value '" +
+                           errorText(s) + "' is not a number from " + shortNumber(kMinUnitsPerMetre) + " to " +
+                           shortNumber(kMaxUnitsPerMetre));
     }
-    if (!(scale > 0)) scale = kDefaultUnitsPerMetre;
+    if (scale == 0) scale = kDefaultUnitsPerMetre;
     level.unitsPerMetre = scale;
 
     EntityCompiler compiler(map, options, level, warnings);
     for (std::size_t i = 0; i < map.entities.size(); ++i) compiler.compile(i);
     if (!level.hasPlayerStart) compiler.warn(map.path + ": no info_player_start; the player starts at the origin");
+    // Every placed thing within the level's box plus a margin: a player start or model far out
+    // reaches OGRE's shadow camera as a degenerate box (an assertion), and is a broken level anyway.
+    const Aabb allowed = placementRegion(level);
+    for (const LevelEntity& e : level.entities)
+        if (e.hasOrigin && !inside(allowed, e.origin))
+            throw MapError(map.path + ":" + std::to_string(e.pos.line) + ": " + (e.classname.empty() ? "entity" : errorText(e.classname)) +
+                           " origin '" + errorText(e.value("origin")) + "' is " + describeOutside(allowed, e.origin));
     return level;
 }
 

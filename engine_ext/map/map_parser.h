@@ -9,6 +9,7 @@
 
 #include "map/level.h"
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -21,6 +22,18 @@ namespace obscura::map {
 struct MapError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+// Limits on what one .map may hold; beyond them loading stops with a `file:line:column` error.
+// Each is far above real maps (LibreQuake e3m4, 3.2 MB: 1,301 entities, 3,441 brushes, 22,180
+// faces, at most 31 faces in a brush) and low enough that a hostile file stays cheap: a brush's
+// faces are clipped against each other (O(faces^2)), so 128 faces cost ~16k clips, where 16k
+// planes in one brush took about a minute.
+constexpr std::size_t kMaxMapFileBytes = 64u << 20;
+constexpr std::size_t kMaxEntitiesPerMap = 65536;
+constexpr std::size_t kMaxKeysPerEntity = 1024;
+constexpr std::size_t kMaxBrushesPerMap = 65536;
+constexpr std::size_t kMaxFacesPerBrush = 128;
+constexpr std::size_t kMaxFacesPerMap = 1u << 18;
 
 struct MapFace {
     Vec3 points[3];  // map units, Quake axes (Z up)
@@ -51,6 +64,7 @@ struct MapFile {
 };
 
 MapFile parseMap(std::string_view text, const std::string& fileName);
-MapFile loadMapFile(const std::string& path);  // throws MapError if unreadable or malformed
+// Throws MapError if unreadable (missing, a directory or device, over kMaxMapFileBytes) or malformed.
+MapFile loadMapFile(const std::string& path);
 
 }  // namespace obscura::map

@@ -1,6 +1,8 @@
 // See model_loader.h.
 #include "render/model_loader.h"
 
+#include "map/asset_path.h"
+#include "map/input_file.h"
 #include "render/level_materials.h"
 
 #include <Ogre.h>
@@ -62,29 +64,43 @@ void appendTriangles(const Ogre::VertexData* vd, const Ogre::IndexData* id, cons
 }
 }  // namespace
 
+std::vector<std::string> modelRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs) {
+    const fs::path levelDir = fs::path(levelPath).parent_path();
+    std::vector<std::string> roots = {(levelDir.empty() ? fs::path(".") : levelDir).string()};
+    for (const std::string& dir : searchDirs) {
+        roots.push_back((fs::path(dir) / "media").string());
+        roots.push_back((fs::path(dir) / ".." / "shared").string());
+    }
+    return roots;
+}
+
 TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,
                         const std::vector<std::string>& searchDirs, const std::string& group, LevelMaterials& materials) {
     auto& rgm = Ogre::ResourceGroupManager::getSingleton();
-    std::string meshName = model.mesh;
-    // A path: make its folder a resource location and load the file by name.
-    for (const std::string& dir : searchDirs) {
-        const fs::path candidate = fs::path(model.mesh).is_absolute() ? fs::path(model.mesh) : fs::path(dir) / model.mesh;
-        if (!model.mesh.empty() && fs::is_regular_file(candidate)) {
-            const std::string dir = fs::canonical(candidate).parent_path().string();
-            if (!rgm.resourceLocationExists(dir, group)) {
-                rgm.addResourceLocation(dir, "FileSystem", group);
-            }
-            meshName = candidate.filename().string();
-            break;
-        }
+    const std::string where = levelPath + ":" + std::to_string(model.pos.line) + ": misc_model";
+    const std::string shown = "'" + errorText(model.mesh) + "'";
+    // A path is resolved (symlinks, `..`) and must stay inside the level's folder or a media
+    // folder before its folder becomes a resource location; a bare name may also come from the
+    // resource group (our own media locations).
+    const map::AssetPath found = map::resolveAsset(model.mesh, searchDirs, modelRoots(levelPath, searchDirs));
+    if (!found.error.empty()) throw std::runtime_error(where + " 'model' " + shown + " " + found.error + "; models must live there");
+    std::string meshName;
+    if (!found.file.empty()) {
+        const std::string dir = fs::path(found.file).parent_path().string();
+        if (!rgm.resourceLocationExists(dir, group)) rgm.addResourceLocation(dir, "FileSystem", group);
+        meshName = fs::path(found.file).filename().string();
+    } else if (map::isBareName(model.mesh) && rgm.resourceExists(group, model.mesh)) {
+        meshName = model.mesh;
     }
     if (meshName.empty() || !rgm.resourceExists(group, meshName))
-        throw std::runtime_error(levelPath + ": misc_model mesh '" + model.mesh + "' not found");
+        throw std::runtime_error(where + " mesh " + shown + " not found (looked in the level's folder, the data folder and the media)");
 
     Ogre::MeshPtr mesh;
-    {
+    try {
         FallbackMaterials fallbacks(materials, group);
         mesh = Ogre::MeshManager::getSingleton().load(meshName, group);
+    } catch (const Ogre::Exception& e) {
+        throw std::runtime_error(where + " mesh " + shown + " cannot be loaded: " + errorText(e.getDescription(), 300));
     }
     Ogre::Entity* entity = scene.createEntity(mesh);
     const Ogre::Affine3 xf = modelTransform(model);

@@ -61,6 +61,16 @@ void Recorder::add(std::int64_t tick, Command::Type type, const std::string& nam
     script_.commands.push_back(c);
 }
 
+void Recorder::setting(const std::string& name, const std::string& value) {
+    Command c;
+    c.type = Command::Type::Set;
+    c.name = name;
+    c.value = value;
+    script_.settings.push_back(c);
+}
+
+void Recorder::set(std::int64_t tick, const std::string& name, const std::string& value) { add(tick, Command::Type::Set, name, value); }
+
 void Recorder::capture(std::int64_t tick, const std::string& name) { add(tick, Command::Type::Capture, name, {}); }
 void Recorder::hash(std::int64_t tick, const std::string& expected) { add(tick, Command::Type::Hash, {}, expected); }
 void Recorder::end(std::int64_t tick) { add(tick, Command::Type::End, {}, {}); }

@@ -18,6 +18,11 @@ public:
     void mouse(std::int64_t tick, int dx, int dy);
     // `button` is left, right or middle (anything else throws ScriptError).
     void button(std::int64_t tick, const std::string& button, bool down);
+    // A setting the session starts with (the `setting` header: mouse sensitivity, invert, bindings),
+    // so a playback reads input the way the recorded session did.
+    void setting(const std::string& name, const std::string& value);
+    // A setting changed during the session (the pause menu): `<tick> set <name> <value>`.
+    void set(std::int64_t tick, const std::string& name, const std::string& value);
     void capture(std::int64_t tick, const std::string& name);
     void hash(std::int64_t tick, const std::string& expected = {});
     void end(std::int64_t tick);

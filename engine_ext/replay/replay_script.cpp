@@ -1,6 +1,8 @@
 // See replay_script.h.
 #include "replay/replay_script.h"
 
+#include "map/input_file.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -8,7 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
+#include <initializer_list>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -16,6 +19,14 @@ namespace obscura::replay {
 
 namespace {
 constexpr int kVersion = 1;
+
+std::vector<std::string> split(const std::string& line) {
+    std::istringstream is(line);
+    std::vector<std::string> out;
+    std::string w;
+    while (is >> w) out.push_back(w);
+    return out;
+}
 
 // The shortest decimal text that reads back as exactly `v` (60 -> "60", 59.94 -> "59.94").
 std::string shortest(double v) {
@@ -27,12 +38,37 @@ std::string shortest(double v) {
 // coarse, above 240 Hz a replay costs more steps than frames are worth on the test machines.
 constexpr double kMinTickRate = 10, kMaxTickRate = 240;
 
-std::vector<std::string> split(const std::string& line) {
-    std::istringstream is(line);
-    std::vector<std::string> out;
-    std::string w;
-    while (is >> w) out.push_back(w);
-    return out;
+// A token echoed in an error: escaped and cut (a 10 MB token must not give a 10 MB line).
+std::string q(const std::string& token) { return "'" + errorText(token) + "'"; }
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.15g", v);
+    return buf;
+}
+
+struct NumberSpec {
+    const char* name;
+    double lo, hi;
+};
+
+// Exactly specs.size() blank-separated finite numbers, each in its range; "" or the problem.
+std::string checkNumbers(const std::string& text, std::initializer_list<NumberSpec> specs, const char* usage) {
+    const std::vector<std::string> w = split(text);
+    if (w.size() != specs.size())
+        return std::to_string(w.size()) + " numbers in " + q(text) + ", expected '" + usage + "'";
+    std::size_t i = 0;
+    for (const NumberSpec& spec : specs) {
+        const std::string& t = w[i++];
+        double v = 0;
+        const char* b = t.data() + (t[0] == '+' ? 1 : 0);
+        const auto r = std::from_chars(b, t.data() + t.size(), v);
+        if (r.ec != std::errc() || r.ptr != t.data() + t.size() || !std::isfinite(v))
+            return q(t) + " (" + spec.name + ") is not a number, expected '" + usage + "'";
+        if (v < spec.lo || v > spec.hi)
+            return q(t) + " (" + spec.name + ") is out of range, expected " + number(spec.lo) + " to " + number(spec.hi);
+    }
+    return {};
 }
 
 class Parser {
@@ -47,8 +83,8 @@ public:
         errno = 0;
         char* end = nullptr;
         const long long v = std::strtoll(s.c_str(), &end, 10);
-        if (s.empty() || *end || errno == ERANGE) fail("'" + s + "' is not an integer, expected " + what);
-        if (v < lo || v > hi) fail(std::string(what) + " " + s + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        if (s.empty() || *end || errno == ERANGE) fail(q(s) + " is not an integer, expected " + what);
+        if (v < lo || v > hi) fail(std::string(what) + " " + errorText(s) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
         return v;
     }
 
@@ -60,7 +96,7 @@ public:
         if (s == "down") return Command::Action::Down;
         if (s == "up") return Command::Action::Up;
         if (s == "tap") return Command::Action::Tap;
-        fail("unknown action '" + s + "', expected down, up or tap");
+        fail("unknown action " + q(s) + ", expected down, up or tap");
     }
 
     void header(Script& s, const std::vector<std::string>& w) {
@@ -68,7 +104,9 @@ public:
             if (w.size() < 2) fail("missing path, expected 'level <path>'");
             std::string path = w[1];
             for (std::size_t i = 2; i < w.size(); ++i) path += " " + w[i];
+            if (path.size() > kMaxLevelPath) fail("level path " + q(path) + " is longer than " + std::to_string(kMaxLevelPath) + " characters");
             s.level = path;
+            s.levelLine = line_;
         } else if (w[0] == "seed") {
             arity(w, 2, "seed <unsigned integer>");
             errno = 0;
@@ -76,7 +114,7 @@ public:
             // Base 10 only: a leading zero must not turn "010" into octal 8.
             const unsigned long long v = std::strtoull(w[1].c_str(), &end, 10);
             if (*end || errno == ERANGE || !std::isdigit(static_cast<unsigned char>(w[1][0])))
-                fail("'" + w[1] + "' is not an unsigned 64-bit integer, expected a seed");
+                fail(q(w[1]) + " is not an unsigned 64-bit integer, expected a seed");
             s.seed = v;
         } else if (w[0] == "resolution") {
             arity(w, 3, "resolution <width> <height>");
@@ -84,25 +122,37 @@ public:
             s.height = static_cast<int>(integer(w[2], "a height", 16, 8192));
         } else if (w[0] == "tickrate") {
             arity(w, 2, "tickrate <ticks per second>");
-            char* end = nullptr;
-            const double v = std::strtod(w[1].c_str(), &end);
-            if (*end || !std::isdigit(static_cast<unsigned char>(w[1][0])) || !std::isfinite(v))
-                fail("'" + w[1] + "' is not a number, expected ticks per second");
+            double v = 0;
+            const auto r = std::from_chars(w[1].data(), w[1].data() + w[1].size(), v);
+            if (r.ec != std::errc() || r.ptr != w[1].data() + w[1].size() || !std::isdigit(static_cast<unsigned char>(w[1][0])) ||
+                !std::isfinite(v))
+                fail(q(w[1]) + " is not a number, expected ticks per second");
             if (v < kMinTickRate || v > kMaxTickRate)
-                fail("tick rate " + w[1] + " is out of range, expected " + shortest(kMinTickRate) + " to " + shortest(kMaxTickRate));
+                fail("tick rate " + errorText(w[1]) + " is out of range, expected " + shortest(kMinTickRate) + " to " + shortest(kMaxTickRate));
             s.tickRate = v;
         } else if (w[0] == "start") {
             arity(w, 6, "start <x> <y> <z> <yaw> <pitch>");
             std::string pose;
-            for (std::size_t i = 1; i < 6; ++i) {
-                char* end = nullptr;
-                const double v = std::strtod(w[i].c_str(), &end);
-                if (*end || !std::isfinite(v)) fail("'" + w[i] + "' is not a number, expected 'start <x> <y> <z> <yaw> <pitch>'");
-                pose += (i > 1 ? " " : "") + w[i];
-            }
+            for (std::size_t i = 1; i < 6; ++i) pose += (i > 1 ? " " : "") + w[i];
+            const std::string problem = checkPose(pose);
+            if (!problem.empty()) fail("start " + problem);
             s.start = pose;
+            s.startLine = line_;
+        } else if (w[0] == "setting") {
+            // A setting the session was recorded with (mouse sensitivity, invert, bindings):
+            // applied before the first tick, as a `0 set` would be.
+            if (w.size() < 3) fail("missing arguments, expected 'setting <name> <value>'");
+            if (known_ && !known_(w[1]))
+                fail("unknown setting " + q(w[1]) + ", expected a setting `obscura --help` lists that can change at run time");
+            Command c;
+            c.type = Command::Type::Set;
+            c.line = line_;
+            c.name = w[1];
+            c.value = w[2];
+            for (std::size_t i = 3; i < w.size(); ++i) c.value += " " + w[i];
+            s.settings.push_back(std::move(c));
         } else {
-            fail("unknown header '" + w[0] + "', expected level, seed, resolution, tickrate, start or '<tick> <command>'");
+            fail("unknown header " + q(w[0]) + ", expected level, seed, resolution, tickrate, start, setting or '<tick> <command>'");
         }
     }
 
@@ -114,7 +164,7 @@ public:
         if (cmd == "key") {
             arity(w, 4, "<tick> key <name> down|up|tap");
             const auto& k = keyNames();
-            if (std::find(k.begin(), k.end(), w[2]) == k.end()) fail("unknown key '" + w[2] + "', expected a key name such as w, space, lshift, f1");
+            if (std::find(k.begin(), k.end(), w[2]) == k.end()) fail("unknown key " + q(w[2]) + ", expected a key name such as w, space, lshift, f1");
             c.type = Command::Type::Key;
             c.name = w[2];
             c.action = action(w[3]);
@@ -125,7 +175,7 @@ public:
             c.dy = static_cast<int>(integer(w[3], "a mouse dy", -100000, 100000));
         } else if (cmd == "button") {
             arity(w, 4, "<tick> button left|right|middle down|up|tap");
-            if (w[2] != "left" && w[2] != "right" && w[2] != "middle") fail("unknown button '" + w[2] + "', expected left, right or middle");
+            if (w[2] != "left" && w[2] != "right" && w[2] != "middle") fail("unknown button " + q(w[2]) + ", expected left, right or middle");
             c.type = Command::Type::Button;
             c.name = w[2];
             c.action = action(w[3]);
@@ -134,14 +184,17 @@ public:
             const bool ok = std::all_of(w[2].begin(), w[2].end(), [](char ch) {
                 return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
             });
-            if (!ok) fail("bad capture name '" + w[2] + "', expected letters, digits, '_' and '-'");
+            if (!ok) fail("bad capture name " + q(w[2]) + ", expected letters, digits, '_' and '-'");
+            if (w[2].size() > kMaxCaptureName)
+                fail("capture name " + q(w[2]) + " is " + std::to_string(w[2].size()) + " characters, expected at most " +
+                     std::to_string(kMaxCaptureName) + " (<name>.partial.png must fit a 255-byte file name)");
             const auto [it, fresh] = captures_.emplace(w[2], line_);
-            if (!fresh) fail("duplicate capture name '" + w[2] + "' (first on line " + std::to_string(it->second) + "), expected a unique name");
+            if (!fresh) fail("duplicate capture name " + q(w[2]) + " (first on line " + std::to_string(it->second) + "), expected a unique name");
             c.type = Command::Type::Capture;
             c.name = w[2];
         } else if (cmd == "set") {
             if (w.size() < 4) fail("missing arguments, expected '<tick> set <setting> <value>'");
-            if (known_ && !known_(w[2])) fail("unknown setting '" + w[2] + "', expected a setting `obscura --help` lists that can change at run time");
+            if (known_ && !known_(w[2])) fail("unknown setting " + q(w[2]) + ", expected a setting `obscura --help` lists that can change at run time");
             c.type = Command::Type::Set;
             c.name = w[2];
             c.value = w[3];
@@ -153,14 +206,14 @@ public:
                 const bool hex = w[2].size() == 16 && std::all_of(w[2].begin(), w[2].end(), [](char ch) {
                                      return std::isdigit(static_cast<unsigned char>(ch)) || (ch >= 'a' && ch <= 'f');
                                  });
-                if (!hex) fail("bad expected hash '" + w[2] + "', expected 16 lower-case hex digits");
+                if (!hex) fail("bad expected hash " + q(w[2]) + ", expected 16 lower-case hex digits");
                 c.value = w[2];
             }
         } else if (cmd == "end") {
             arity(w, 2, "<tick> end");
             c.type = Command::Type::End;
         } else {
-            fail("unknown command '" + cmd + "', expected one of key, mouse, button, capture, set, hash, end");
+            fail("unknown command " + q(cmd) + ", expected one of key, mouse, button, capture, set, hash, end");
         }
         return c;
     }
@@ -180,28 +233,29 @@ public:
             const auto w = split(raw);
             if (w.empty()) continue;
             if (!sawVersion) {
-                if (w[0] != "obscura-replay") fail("expected the header 'obscura-replay " + std::to_string(kVersion) + "' first");
+                if (w[0] != "obscura-replay")
+                    fail("expected the header 'obscura-replay " + std::to_string(kVersion) + "' first, found " + q(w[0]));
                 arity(w, 2, "obscura-replay <version>");
                 s.version = static_cast<int>(integer(w[1], "a version", 0, 1000000));
-                if (s.version != kVersion) fail("unsupported version " + w[1] + ", expected " + std::to_string(kVersion));
+                if (s.version != kVersion) fail("unsupported version " + errorText(w[1]) + ", expected " + std::to_string(kVersion));
                 sawVersion = true;
                 continue;
             }
             if (ended) {
                 std::string text = w[0];
                 for (std::size_t i = 1; i < w.size(); ++i) text += " " + w[i];
-                fail("'" + text + "' after 'end', expected nothing");
+                fail(q(text) + " after 'end', expected nothing");
             }
             const bool isTick = std::isdigit(static_cast<unsigned char>(w[0][0])) || w[0][0] == '-';
             if (!isTick) {
-                if (!s.commands.empty()) fail("header '" + w[0] + "' after the first command, expected '<tick> <command>'");
+                if (!s.commands.empty()) fail("header " + q(w[0]) + " after the first command, expected '<tick> <command>'");
                 header(s, w);
                 continue;
             }
             if (s.level.empty()) fail("the header has no 'level <path>' line before the first command");
             if (w.size() < 2) fail("missing command after tick, expected '<tick> <command>'");
             const std::int64_t tick = integer(w[0], "a tick", 0, 1000000000);
-            if (tick < lastTick) fail("tick " + w[0] + " is before tick " + std::to_string(lastTick) + " of line " + std::to_string(lastTickLine));
+            if (tick < lastTick) fail("tick " + errorText(w[0]) + " is before tick " + std::to_string(lastTick) + " of line " + std::to_string(lastTickLine));
             lastTick = tick;
             lastTickLine = line_;
             s.commands.push_back(command(w, tick));
@@ -265,11 +319,39 @@ Script parseScript(std::string_view text, const std::string& fileName, const std
 }
 
 Script loadScript(const std::string& path, const std::function<bool(const std::string&)>& isKnownSetting) {
-    std::ifstream in(path);
-    if (!in) throw ScriptError(path + ": cannot open replay script");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return parseScript(ss.str(), path, isKnownSetting);
+    std::string text, error;
+    if (!readInputFile(path, kMaxScriptBytes, "replay script", text, error)) throw ScriptError(error);
+    return parseScript(text, path, isKnownSetting);
+}
+
+std::string checkPose(const std::string& text) {
+    return checkNumbers(text,
+                        {{"x", -kMaxPosition, kMaxPosition}, {"y", -kMaxPosition, kMaxPosition}, {"z", -kMaxPosition, kMaxPosition},
+                         {"yaw", -360, 360}, {"pitch", -90, 90}},
+                        "x y z yaw pitch");
+}
+
+std::string checkPoint(const std::string& text) {
+    return checkNumbers(text, {{"x", -kMaxPosition, kMaxPosition}, {"y", -kMaxPosition, kMaxPosition}, {"z", -kMaxPosition, kMaxPosition}},
+                        "x y z");
+}
+
+std::string resolveLevel(const Script& script, const std::string& dataDir) {
+    namespace fs = std::filesystem;
+    fs::path level = script.level;
+    std::string looked;
+    if (level.is_relative()) {
+        const fs::path besideScript = fs::path(script.fileName).parent_path() / level;
+        looked = " (looked beside the script and in " + errorText(dataDir, 200) + ")";
+        level = fs::exists(besideScript) ? besideScript : fs::path(dataDir) / level;
+    }
+    const std::string where = script.fileName + ":" + std::to_string(script.levelLine) + ": level " + q(script.level);
+    std::error_code ec;
+    const fs::file_status st = fs::status(level, ec);
+    if (ec || !fs::exists(st)) throw ScriptError(where + " not found" + looked);
+    if (fs::is_directory(st)) throw ScriptError(where + " is a directory, expected a map file");
+    if (!fs::is_regular_file(st)) throw ScriptError(where + " is not a regular file, expected a map file");
+    return level.string();
 }
 
 std::string formatScript(const Script& s) {
@@ -278,6 +360,7 @@ std::string formatScript(const Script& s) {
     o << "level " << s.level << "\nseed " << s.seed << "\nresolution " << s.width << " " << s.height << "\n";
     o << "tickrate " << shortest(s.tickRate) << "\n";
     if (!s.start.empty()) o << "start " << s.start << "\n";
+    for (const auto& c : s.settings) o << "setting " << c.name << " " << c.value << "\n";
     for (const auto& c : s.commands) {
         o << c.tick << " ";
         switch (c.type) {

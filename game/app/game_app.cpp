@@ -149,6 +149,7 @@ void GameApp::shutdown() {
 void GameApp::load() {
     std::vector<std::string> warnings;
     map::Level level = Session::loadLevel(settings_, &warnings);
+    checkInLevel(settings_, level);  // the start pose and smoke position inside the level's box
     for (const auto& w : warnings) Ogre::LogManager::getSingleton().logWarning(w);
     if (!warnings.empty())
         std::cerr << "obscura: " << warnings.size() << " warnings loading " << settings_.level << " (see the log)\n";
@@ -293,6 +294,9 @@ int GameApp::run() {
     if (!settings_.record.empty())
         recorder_ = std::make_unique<replay::Recorder>(settings_.level, settings_.seed, settings_.width,
                                                        settings_.height, settings_.tickRate);
+    // A recording carries the settings that change input, so it plays back the same anywhere.
+    if (recorder_)
+        for (const auto& [k, v] : inputSettingValues(settings_)) recorder_->setting(k, v);
     initApp();
     if (!mRoot || getRenderWindow() == nullptr) throw std::runtime_error("OGRE failed to initialise (see the log)");
     load();
@@ -332,6 +336,7 @@ int GameApp::run() {
 
 void GameApp::applySetting(const std::string& key, const std::string& value, const std::string& where) {
     parser_.apply(key, value, settings_, where);  // validated at load time, so this does not throw
+    if (recorder_ && where == "menu") recorder_->set(static_cast<std::int64_t>(session_->tick()), key, value);
     if (key == "fov") {
         view_->setFov(settings_.fov);
     } else if (key.rfind("ssao", 0) == 0 || key == "ao-only" || key == "exposure") {

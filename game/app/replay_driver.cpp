@@ -30,36 +30,25 @@ std::unique_ptr<replay::Script> prepareReplay(Settings& settings, const Settings
     auto known = [&parser](const std::string& key) { return parser.isRuntime(key); };
     auto script = std::make_unique<replay::Script>(replay::loadScript(path, known));
     Settings scratch = settings;
+    for (const auto& c : script->settings) parser.apply(c.name, c.value, scratch, script->fileName + ":" + std::to_string(c.line));
     for (const auto& c : script->commands)
         if (c.type == replay::Command::Type::Set)
             parser.apply(c.name, c.value, scratch, script->fileName + ":" + std::to_string(c.line));
 
     // The script's header decides the level, seed, resolution and tick rate.
-    fs::path level = script->level;
-    if (level.is_relative()) {
-        const fs::path besideScript = fs::path(path).parent_path() / level;
-        level = fs::exists(besideScript) ? besideScript : fs::path(settings.dataDir) / level;
-    }
-    if (!fs::is_regular_file(level)) throw replay::ScriptError(path + ": level '" + script->level + "' not found");
-    settings.level = level.string();
+    settings.level = replay::resolveLevel(*script, settings.dataDir);
     settings.seed = script->seed;
     settings.width = script->width;
     settings.height = script->height;
     settings.tickRate = script->tickRate;
-    if (!script->start.empty()) settings.startPose = script->start;
+    if (!script->start.empty()) {
+        settings.startPose = script->start;
+        settings.sources["start-pose"] = script->fileName + ":" + std::to_string(script->startLine);
+    }
     settings.vsync = false;
     if (settings.replay.size()) settings.headless = true;
 
-    if (!settings.replay.empty()) {
-        // Fail now, not at the first capture, if the folder cannot be written.
-        std::error_code ec;
-        fs::create_directories(settings.captureDir, ec);
-        const fs::path probe = fs::path(settings.captureDir) / ".obscura-write-test";
-        std::ofstream(probe.string()) << "";
-        if (ec || !fs::exists(probe))
-            throw std::runtime_error("capture folder '" + settings.captureDir + "' cannot be written");
-        fs::remove(probe, ec);
-    }
+    // (An unwritable capture folder is refused before the run, by main: checkOutputsWritable.)
     return script;
 }
 

@@ -1,8 +1,12 @@
 #include <gtest/gtest.h>
 
+#include "map/map_compile.h"
+#include "replay/replay_recorder.h"
+#include "replay_player.h"
 #include "settings.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -84,11 +88,20 @@ TEST(Settings, BadCommandLineIsAClearError) {
     EXPECT_NE(errorOf({"--config", "/nonexistent/obscura.cfg"}).find("cannot open"), std::string::npos);
 }
 
-TEST(Settings, OutOfRangeNumbersAreClamped) {
+TEST(Settings, OutOfRangeNumbersAreErrorsNotClamped) {
+    EXPECT_EQ(errorOf({"--width", "-5"}), "command line: setting 'width': '-5' is out of range, expected 16 to 8192");
+    EXPECT_EQ(errorOf({"--fov", "500"}), "command line: setting 'fov': '500' is out of range, expected 40 to 140");
+    EXPECT_EQ(errorOf({"--width", "640.5"}), "command line: setting 'width': '640.5' is not a whole number");
+    for (const char* bad : {"inf", "nan", "0x10", "1e400", " 90", "90 ", ""})
+        EXPECT_EQ(errorOf({"--fov", bad}), "command line: setting 'fov': '" + std::string(bad) + "' is not a number") << bad;
+    EXPECT_EQ(errorOf({"--map-scale", "0.5"}), "command line: setting 'map-scale': '0.5' is out of range, expected 0 (from the map) or 1 to 1024");
+    EXPECT_EQ(errorOf({"--ticks", "-1"}), "command line: setting 'ticks': '-1' is out of range, expected 0 to 1000000000");
+    const std::string cfg = writeTemp("obscura_range.cfg", "fov = 90\nmouse-sensitivity = 0\n");
+    EXPECT_EQ(errorOf({"--config", cfg}), cfg + ":2: setting 'mouse-sensitivity': '0' is out of range, expected 0.01 to 20");
     Settings s;
-    ASSERT_TRUE(parseArgs({"--fov", "500", "--width", "3"}, s));
+    ASSERT_TRUE(parseArgs({"--fov", "140", "--width", "16", "--map-scale", "0", "--ticks", "+5"}, s));
     EXPECT_DOUBLE_EQ(s.fov, 140);
-    EXPECT_EQ(s.width, 16);
+    EXPECT_EQ(s.ticks, 5);
 }
 
 TEST(Settings, RuntimeApplyUsesTheSameTable) {
@@ -108,10 +121,11 @@ TEST(Settings, RuntimeApplyUsesTheSameTable) {
 
 TEST(Settings, AoModeIsValidatedAndCycles) {
     Settings s;
-    ASSERT_TRUE(parseArgs({"--ssao", "crytek", "--ssao-radius", "0.8", "--ssao-samples", "64"}, s));
+    ASSERT_TRUE(parseArgs({"--ssao", "crytek", "--ssao-radius", "0.8", "--ssao-samples", "32"}, s));
     EXPECT_EQ(s.ssao, "crytek");
     EXPECT_DOUBLE_EQ(s.ssaoRadius, 0.8);
-    EXPECT_EQ(s.ssaoSamples, 32);  // clamped with a warning
+    EXPECT_EQ(s.ssaoSamples, 32);
+    EXPECT_EQ(errorOf({"--ssao-samples", "64"}), "command line: setting 'ssao-samples': '64' is out of range, expected 1 to 32");
     EXPECT_NE(errorOf({"--ssao", "hbao++"}).find("unknown mode 'hbao++', expected one of off, crytek, hemisphere, cone, horizon"),
               std::string::npos);
 }
@@ -130,4 +144,160 @@ TEST(Settings, UpdateConfigTextRewritesKeysKeepsTheRest) {
     EXPECT_DOUBLE_EQ(s.mouseSensitivity, 1.5);
     EXPECT_DOUBLE_EQ(s.masterVolume, 0.3);
     EXPECT_DOUBLE_EQ(s.fov, 100);
+}
+
+// Hardening (issue 12): every value checked where it enters, with the file:line or "command line".
+TEST(SettingsBoundary, APositionalArgumentIsNamed) {
+    EXPECT_EQ(errorOf({"arena.map"}), "command line: unexpected argument 'arena.map': settings are given as --name value (see --help)");
+    EXPECT_EQ(errorOf({"--width", "640", "x"}), "command line: unexpected argument 'x': settings are given as --name value (see --help)");
+}
+
+TEST(SettingsBoundary, DuplicateBindingsAreErrorsButSwapsInAFileAreFine) {
+    EXPECT_EQ(errorOf({"--bind-jump", "w"}),
+              "command line: setting 'bind-jump': key 'w' is already bound to 'forward' (by default); one key per action");
+    const std::string dup = writeTemp("obscura_dup.cfg", "bind-fire = j\nbind-jump = j\n");
+    EXPECT_EQ(errorOf({"--config", dup}), dup + ":2: setting 'bind-jump': key 'j' is already bound to 'fire' (at " + dup +
+                                              ":1); one key per action");
+    const std::string swap = writeTemp("obscura_swap.cfg", "bind-forward = s\nbind-back = w\n");
+    Settings s;
+    ASSERT_TRUE(parseArgs({"--config", swap}, s));
+    EXPECT_EQ(s.bindings.at(Action::Forward), "s");
+    EXPECT_EQ(s.bindings.at(Action::Back), "w");
+    // At run time (the menu's rebinding, a replay's set) the two actions swap keys.
+    SettingsParser p;
+    p.apply("bind-jump", "w", s, "menu");
+    EXPECT_EQ(s.bindings.at(Action::Jump), "w");
+    EXPECT_EQ(s.bindings.at(Action::Back), "space");
+    EXPECT_NO_THROW(checkBindings(s));
+}
+
+TEST(SettingsBoundary, StartPoseAndSmokeAtAreFiniteAndRanged) {
+    EXPECT_EQ(errorOf({"--start-pose", "1e10 1.65 0 0 0"}),
+              "command line: setting 'start-pose': '1e10' (x) is out of range, expected -300000 to 300000");
+    EXPECT_EQ(errorOf({"--start-pose", "1 2 3 4 5garbage"}),
+              "command line: setting 'start-pose': '5garbage' (pitch) is not a number, expected 'x y z yaw pitch'");
+    EXPECT_EQ(errorOf({"--start-pose", "1 2 3 4 5 6"}),
+              "command line: setting 'start-pose': 6 numbers in '1 2 3 4 5 6', expected 'x y z yaw pitch'");
+    EXPECT_EQ(errorOf({"--smoke-at", "0 nan 0"}), "command line: setting 'smoke-at': 'nan' (y) is not a number, expected 'x y z'");
+    const std::string cfg = writeTemp("obscura_pose.cfg", "# far\nstart-pose = 0 1.65 -4e5 0 0\n");
+    EXPECT_EQ(errorOf({"--config", cfg}), cfg + ":2: setting 'start-pose': '-4e5' (z) is out of range, expected -300000 to 300000");
+}
+
+TEST(SettingsBoundary, PosesMustLieInTheLevel) {
+    // A 64-unit cube: 2 m; the box allowed is the brushes plus 100 m.
+    const std::string cube =
+        "{\n\"classname\" \"worldspawn\"\n{\n"
+        "( 0 0 0 ) ( 0 1 0 ) ( 0 0 1 ) t 0 0 0 1 1\n( 0 0 0 ) ( 0 0 1 ) ( 1 0 0 ) t 0 0 0 1 1\n"
+        "( 0 0 0 ) ( 1 0 0 ) ( 0 1 0 ) t 0 0 0 1 1\n( 64 64 64 ) ( 64 65 64 ) ( 65 64 64 ) t 0 0 0 1 1\n"
+        "( 64 64 64 ) ( 65 64 64 ) ( 64 64 65 ) t 0 0 0 1 1\n( 64 64 64 ) ( 64 64 65 ) ( 64 65 64 ) t 0 0 0 1 1\n}\n}\n";
+    const map::Level level = map::compileLevel(map::parseMap(cube, "cube.map"));
+    Settings s;
+    ASSERT_TRUE(parseArgs({"--start-pose", "1 1.65 -1 0 0", "--smoke-at", "50 0 0"}, s));
+    EXPECT_NO_THROW(checkInLevel(s, level));
+    ASSERT_TRUE(parseArgs({"--start-pose", "500 1.65 0 0 0"}, s));
+    try {
+        checkInLevel(s, level);
+        FAIL();
+    } catch (const SettingsError& e) {
+        EXPECT_STREQ(e.what(), "command line: setting 'start-pose': (500, 1.65, 0) is outside cube.map: its brushes plus 100 m "
+                               "reach (-100, -100, -102) to (102, 102, 100)");
+    }
+    // From a file: its line. A replay's `start` goes through the same check with the script's line.
+    Settings t;
+    const std::string cfg = writeTemp("obscura_far.cfg", "smoke-at = 0 0 -300\n");
+    ASSERT_TRUE(parseArgs({"--config", cfg}, t));
+    t.sources["start-pose"] = "walk.replay:4";
+    t.startPose = "0 1.65 900 0 0";
+    try {
+        checkInLevel(t, level);
+        FAIL();
+    } catch (const SettingsError& e) {
+        EXPECT_NE(std::string(e.what()).find("walk.replay:4: setting 'start-pose': (0, 1.65, 900) is outside"), std::string::npos) << e.what();
+    }
+    t.startPose.clear();
+    try {
+        checkInLevel(t, level);
+        FAIL();
+    } catch (const SettingsError& e) {
+        EXPECT_NE(std::string(e.what()).find(cfg + ":1: setting 'smoke-at': (0, 0, -300) is outside"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SettingsBoundary, ConfigFilesAreBoundedAndNamed) {
+    EXPECT_EQ(errorOf({"--config", "/dev/zero"}), "/dev/zero: is a device, expected a config file");
+    EXPECT_EQ(errorOf({"--config", testing::TempDir()}), testing::TempDir() + ": is a directory, expected a config file");
+    const std::string big = testing::TempDir() + "obscura_big.cfg";
+    std::ofstream(big).close();
+    std::filesystem::resize_file(big, kMaxConfigBytes + 1);
+    EXPECT_EQ(errorOf({"--config", big}), big + ": config file is 1048577 bytes, more than the 1 MiB limit");
+    // A long token and raw bytes: a short line, escaped.
+    const std::string longLine = writeTemp("obscura_long.cfg", "fov = " + std::string(900'000, '9') + "\x01\n");
+    const std::string e = errorOf({"--config", longLine});
+    EXPECT_LT(e.size(), 300u);
+    EXPECT_NE(e.find(longLine + ":1: setting 'fov': '9999"), std::string::npos) << e;
+    EXPECT_NE(e.find("... (900001 bytes)' is not a number"), std::string::npos) << e;
+    const std::string raw = writeTemp("obscura_raw.cfg", "\x1b[31m\n");
+    EXPECT_EQ(errorOf({"--config", raw}), raw + ":1: expected 'key = value', got '\\x1b[31m'");
+}
+
+TEST(SettingsBoundary, AConfigsLevelIsCheckedWithItsLine) {
+    const std::string cfg = writeTemp("obscura_level.cfg", "fov = 90\nlevel = /nonexistent/nothere.map\n");
+    EXPECT_EQ(errorOf({"--config", cfg}), cfg + ":2: setting 'level': map file '/nonexistent/nothere.map' not found");
+    const std::string dir = writeTemp("obscura_level2.cfg", "level = " + testing::TempDir() + "\n");
+    EXPECT_NE(errorOf({"--config", dir}).find(dir + ":1: setting 'level': '"), std::string::npos);
+    const std::string ok = writeTemp("obscura_level3.cfg", "level = " + std::string(OBSCURA_SOURCE_DIR) + "/media/levels/arena.map\n");
+    Settings s;
+    EXPECT_TRUE(parseArgs({"--config", ok}, s));
+}
+
+TEST(SettingsBoundary, OutputsAreCheckedWritableBeforeTheRun) {
+    const auto outputError = [](std::vector<std::string> args) {
+        Settings s;
+        try {
+            parseArgs(std::move(args), s);
+            checkOutputsWritable(s);
+        } catch (const SettingsError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(outputError({"--screenshot", "/nonexistent/shot.png"}),
+              "command line: setting 'screenshot': cannot write '/nonexistent/shot.png': its folder '/nonexistent' does not exist");
+    EXPECT_EQ(outputError({"--record", "/etc/passwd/x.replay"}),
+              "command line: setting 'record': cannot write '/etc/passwd/x.replay': its folder '/etc/passwd' is not a folder");
+    EXPECT_EQ(outputError({"--record", "/proc/x.replay"}),
+              "command line: setting 'record': cannot write '/proc/x.replay': its folder '/proc' cannot be written");
+    EXPECT_EQ(outputError({"--replay", "x.replay", "--capture-dir", "/proc/captures"}),
+              "command line: setting 'capture-dir': folder '/proc/captures' cannot be created (No such file or directory)");
+    EXPECT_EQ(outputError({"--screenshot", testing::TempDir() + "shot"}),
+              "command line: setting 'screenshot': '" + testing::TempDir() + "shot' does not end in .png (screenshots are PNG files)");
+    EXPECT_EQ(outputError({"--screenshot", testing::TempDir() + "shot.png", "--record", testing::TempDir() + "r.replay",
+                           "--replay", "x.replay", "--capture-dir", testing::TempDir() + "caps/new"}),
+              "");
+    EXPECT_TRUE(std::filesystem::is_directory(testing::TempDir() + "caps/new"));
+    const std::string cfg = writeTemp("obscura_out.cfg", "\nscreenshot = /nonexistent/a.png\n");
+    EXPECT_EQ(outputError({"--config", cfg}),
+              cfg + ":2: setting 'screenshot': cannot write '/nonexistent/a.png': its folder '/nonexistent' does not exist");
+}
+
+TEST(SettingsBoundary, RecordingsCarryTheInputSettingsAndReplaysApplyThemFirst) {
+    Settings recorded;
+    ASSERT_TRUE(parseArgs({"--mouse-sensitivity", "2.5", "--invert-mouse", "--bind-jump", "j", "--bind-fire", "mouse2"}, recorded));
+    replay::Recorder rec("a.map", 1, 320, 180, 60);
+    for (const auto& [k, v] : inputSettingValues(recorded)) rec.setting(k, v);
+    rec.keyDown(0, "j");
+    rec.end(10);
+    const replay::Script script = replay::parseScript(replay::formatScript(rec.script()), "rec.replay");
+    // Played back onto default settings (replays never read a config), in ReplayPlayer's order.
+    Settings played;
+    SettingsParser p;
+    ReplayPlayer player(script);
+    const ReplayTick t0 = player.take(0);
+    ASSERT_EQ(t0.settings.size(), inputSettingValues(recorded).size());
+    for (const auto* c : t0.settings) p.apply(c->name, c->value, played, script.fileName + ":" + std::to_string(c->line));
+    EXPECT_DOUBLE_EQ(played.mouseSensitivity, 2.5);
+    EXPECT_TRUE(played.invertMouse);
+    EXPECT_EQ(played.bindings, recorded.bindings);
+    ASSERT_EQ(t0.inputs.size(), 1u);
+    EXPECT_TRUE(player.take(1).settings.empty());  // once, before the first tick
 }

@@ -81,7 +81,7 @@ TEST(MapParser, MissingFileIsAClearError) {
         loadMapFile("/nonexistent/level.map");
         FAIL();
     } catch (const MapError& e) {
-        EXPECT_EQ(std::string(e.what()), "/nonexistent/level.map: cannot open map file");
+        EXPECT_EQ(std::string(e.what()), "/nonexistent/level.map: cannot open map file (No such file or directory)");
     }
 }
 

@@ -89,8 +89,8 @@ TEST(ReplayBench, ScriptErrorsExitWithFileAndLine) {
 
     std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 capture x\n";
     r = sh("'" + kGame + "' --replay " + bad + " --capture-dir /proc/obscura-cannot-write");
-    EXPECT_EQ(r.code, 1);
-    EXPECT_NE(r.out.find("cannot be written"), std::string::npos) << r.out;
+    EXPECT_EQ(r.code, 2);  // checked with the settings, before the run: a usage error
+    EXPECT_NE(r.out.find("setting 'capture-dir': folder '/proc/obscura-cannot-write' cannot be created"), std::string::npos) << r.out;
 }
 
 TEST(ReplayBench, AlteredReferenceFailsWithAnHtmlReport) {
@@ -127,4 +127,38 @@ TEST(ReplayBench, RendererThreadCountChangesNoHashAndNoPixel) {
     EXPECT_EQ(finalHash(one.out), finalHash(four.out));
     for (const char* name : {"courtyard", "corridor", "room_a"})
         EXPECT_EQ(read(temp("thr1") + "/" + name + ".png"), read(temp("thr4") + "/" + name + ".png")) << name;
+}
+
+// Issue 12: hostile replay input and unwritable outputs fail before the run, naming file and line.
+TEST(ReplayBench, HostileInputsAndUnwritableOutputsFailBeforeTheRun) {
+    Result r = sh("'" + kGame + "' --replay /dev/zero --capture-dir " + temp("cap_h"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("/dev/zero: is a device, expected a replay script"), std::string::npos) << r.out;
+
+    const std::string far = temp("far.replay");
+    std::ofstream(far) << "obscura-replay 1\nlevel media/levels/arena.map\nresolution 64 64\nstart 1e10 1.65 0 0 0\n5 end\n";
+    r = sh("'" + kGame + "' --replay " + far + " --capture-dir " + temp("cap_h"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find(far + ":4: start '1e10' (x) is out of range, expected -300000 to 300000"), std::string::npos) << r.out;
+
+    const std::string longName = temp("longname.replay");
+    std::ofstream(longName) << "obscura-replay 1\nlevel media/levels/arena.map\n3 capture " << std::string(250, 'n') << "\n";
+    r = sh("'" + kGame + "' --replay " + longName + " --capture-dir " + temp("cap_h"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find(longName + ":3: capture name 'nnnn"), std::string::npos) << r.out;
+    EXPECT_LT(r.out.size(), 400u) << r.out;
+
+    const std::string noLevel = temp("nolevel.replay");
+    std::ofstream(noLevel) << "obscura-replay 1\nlevel media/levels/nothere.map\n5 end\n";
+    r = sh("'" + kGame + "' --replay " + noLevel + " --capture-dir " + temp("cap_h"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("level 'media/levels/nothere.map' not found"), std::string::npos) << r.out;
+
+    r = sh("'" + kGame + "' --replay '" + kScripts + "/arena_walk.replay' --capture-dir /proc/obscura_caps");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("setting 'capture-dir': folder '/proc/obscura_caps' cannot be created"), std::string::npos) << r.out;
+    r = sh("'" + kGame + "' --replay '" + kScripts + "/arena_walk.replay' --capture-dir " + temp("cap_h") + " --record /proc/x.replay");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("setting 'record': cannot write '/proc/x.replay': its folder '/proc' cannot be written"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("renderer "), std::string::npos) << "the run started: " << r.out;
 }

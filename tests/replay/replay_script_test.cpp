@@ -5,6 +5,9 @@
 #include "replay/replay_recorder.h"
 #include "replay/replay_script.h"
 
+#include <filesystem>
+#include <fstream>
+
 using namespace obscura::replay;
 
 namespace {
@@ -83,7 +86,7 @@ TEST(ReplayScript, HeaderErrors) {
         }
         return std::string();
     };
-    EXPECT_EQ(err("level a.map\n"), "h.replay:1: expected the header 'obscura-replay 1' first");
+    EXPECT_EQ(err("level a.map\n"), "h.replay:1: expected the header 'obscura-replay 1' first, found 'level'");
     EXPECT_EQ(err("obscura-replay 2\n"), "h.replay:1: unsupported version 2, expected 1");
     EXPECT_EQ(err(""), "h.replay:1: empty script, expected the header 'obscura-replay 1'");
     EXPECT_EQ(err("obscura-replay 1\n0 hash\n"), "h.replay:2: the header has no 'level <path>' line before the first command");
@@ -173,7 +176,7 @@ TEST(ReplayScript, HeaderValueErrorsNameTheirLine) {
     EXPECT_EQ(err("resolution 640"), "h.replay:4: missing arguments, expected 'resolution <width> <height>'");
     EXPECT_EQ(err("resolution 640 x"), "h.replay:4: 'x' is not an integer, expected a height");
     EXPECT_EQ(err("level"), "h.replay:4: missing path, expected 'level <path>'");
-    EXPECT_EQ(err("obscura-replay 1"), "h.replay:4: unknown header 'obscura-replay', expected level, seed, resolution, tickrate, start or '<tick> <command>'");
+    EXPECT_EQ(err("obscura-replay 1"), "h.replay:4: unknown header 'obscura-replay', expected level, seed, resolution, tickrate, start, setting or '<tick> <command>'");
     EXPECT_EQ(err("0"), "h.replay:4: missing command after tick, expected '<tick> <command>'");
     EXPECT_EQ(err("0 capture a\n9 capture a"), "h.replay:5: duplicate capture name 'a' (first on line 4), expected a unique name");
     EXPECT_EQ(err("0 end\n\n# trailing comments are fine\n"), "");
@@ -243,5 +246,114 @@ TEST(ReplayScript, OptionalStartPoseRoundTripsAndBadOnesNameTheLine) {
         FAIL() << "accepted a bad start pose";
     } catch (const obscura::replay::ScriptError& e) {
         EXPECT_NE(std::string(e.what()).find("bad.replay:3"), std::string::npos) << e.what();
+    }
+}
+
+// Hardening: bounded reads, short error lines, ranged poses, capture names that fit a file name,
+// the level named with its line, and the input settings a recording carries.
+namespace {
+std::string loadError(const std::string& path) {
+    try {
+        loadScript(path);
+    } catch (const ScriptError& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(ReplayLimits, DevicesDirectoriesAndOversizedScriptsAreRefusedByName) {
+    EXPECT_EQ(loadError("/dev/zero"), "/dev/zero: is a device, expected a replay script");
+    EXPECT_EQ(loadError(testing::TempDir()), testing::TempDir() + ": is a directory, expected a replay script");
+    const std::string big = testing::TempDir() + "huge.replay";
+    std::ofstream(big).close();
+    std::filesystem::resize_file(big, kMaxScriptBytes + 1);
+    EXPECT_EQ(loadError(big), big + ": replay script is 16777217 bytes, more than the 16 MiB limit");
+    std::filesystem::remove(big);
+    EXPECT_EQ(loadError("/nonexistent.replay"), "/nonexistent.replay: cannot open replay script (No such file or directory)");
+}
+
+TEST(ReplayLimits, LongTokensAreCutAndRawBytesEscaped) {
+    const std::string e = errorOf("0 key " + std::string(10'000'000, 'w') + " down\n");
+    EXPECT_LT(e.size(), 200u);
+    EXPECT_NE(e.find("r.replay:5: unknown key 'wwww"), std::string::npos) << e;
+    EXPECT_NE(e.find("... (10000000 bytes)'"), std::string::npos) << e;
+    EXPECT_EQ(errorOf("0 frob\x1b[2J\n"), "r.replay:5: unknown command 'frob\\x1b[2J', expected one of key, mouse, button, capture, set, hash, end");
+}
+
+TEST(ReplayLimits, CaptureNamesMustFitAFileName) {
+    const std::string ok(kMaxCaptureName, 'c');
+    EXPECT_EQ(errorOf("0 capture " + ok + "\n"), "");
+    const std::string e = errorOf("0 capture " + ok + "d\n");
+    EXPECT_NE(e.find("r.replay:5: capture name 'cccc"), std::string::npos) << e;
+    EXPECT_NE(e.find("is 244 characters, expected at most 243 (<name>.partial.png must fit a 255-byte file name)"), std::string::npos) << e;
+}
+
+TEST(ReplayLimits, StartPoseIsFiniteAndRanged) {
+    const auto err = [](const std::string& start) {
+        try {
+            parseScript("obscura-replay 1\nlevel a.map\nstart " + start + "\n", "s.replay");
+        } catch (const ScriptError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(err("1e10 1.65 0 0 0"), "s.replay:3: start '1e10' (x) is out of range, expected -300000 to 300000");
+    EXPECT_EQ(err("0 1.65 0 0 91"), "s.replay:3: start '91' (pitch) is out of range, expected -90 to 90");
+    EXPECT_EQ(err("0 1.65 0 720 0"), "s.replay:3: start '720' (yaw) is out of range, expected -360 to 360");
+    EXPECT_EQ(err("0 1.65 0 inf 0"), "s.replay:3: start 'inf' (yaw) is not a number, expected 'x y z yaw pitch'");
+    EXPECT_EQ(err("0 1e400 0 0 0"), "s.replay:3: start '1e400' (y) is not a number, expected 'x y z yaw pitch'");
+    EXPECT_EQ(err("300000 -300000 1.5 -360 90"), "");
+    EXPECT_EQ(checkPose("1 2 3 4"), "4 numbers in '1 2 3 4', expected 'x y z yaw pitch'");
+    EXPECT_EQ(checkPoint("1 2 3"), "");
+    EXPECT_EQ(checkPoint("1 2 3x"), "'3x' (z) is not a number, expected 'x y z'");
+    const Script s = parseScript("obscura-replay 1\n# c\nlevel a.map\nstart 1 2 3 4 5\n", "s.replay");
+    EXPECT_EQ(s.levelLine, 3);
+    EXPECT_EQ(s.startLine, 4);
+}
+
+TEST(ReplayLimits, AMissingLevelNamesTheScriptsLevelLine) {
+    const std::string dir = testing::TempDir() + "replay_level/";
+    std::filesystem::create_directories(dir + "sub.map");
+    std::ofstream(dir + "here.map") << "{\n}\n";
+    const auto script = [&](const std::string& level) {
+        return parseScript("obscura-replay 1\n\nlevel " + level + "\n0 end\n", dir + "x.replay");
+    };
+    EXPECT_EQ(resolveLevel(script("here.map"), "/nonexistent"), dir + "here.map");
+    try {
+        resolveLevel(script("gone.map"), "/data");
+        FAIL();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()), dir + "x.replay:3: level 'gone.map' not found (looked beside the script and in /data)");
+    }
+    try {
+        resolveLevel(script(dir + "sub.map"), "/data");
+        FAIL();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()), dir + "x.replay:3: level '" + dir + "sub.map' is a directory, expected a map file");
+    }
+}
+
+TEST(ReplayLimits, SettingHeadersRoundTripAndNameUnknownSettings) {
+    Recorder r("a.map", 3, 320, 180, 60);
+    r.setting("mouse-sensitivity", "2.5");
+    r.setting("bind-jump", "j");
+    r.set(40, "invert-mouse", "true");
+    r.end(50);
+    const Script s = r.script();
+    const std::string text = formatScript(s);
+    EXPECT_NE(text.find("tickrate 60\nsetting mouse-sensitivity 2.5\nsetting bind-jump j\n40 set invert-mouse true\n"), std::string::npos) << text;
+    const Script back = parseScript(text, "rec.replay");
+    EXPECT_EQ(back, s);
+    ASSERT_EQ(back.settings.size(), 2u);
+    EXPECT_EQ(back.settings[1].name, "bind-jump");
+    EXPECT_EQ(back.settings[1].line, 7);
+    const auto known = [](const std::string& k) { return k == "mouse-sensitivity"; };
+    try {
+        parseScript("obscura-replay 1\nlevel a.map\nsetting mouse-sensitivty 2\n", "u.replay", known);
+        FAIL();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "u.replay:3: unknown setting 'mouse-sensitivty', expected a setting `obscura --help` lists that can change at run time");
     }
 }
