@@ -3,7 +3,7 @@
 #ifndef OBSCURA_DECALS_SHARED_H
 #define OBSCURA_DECALS_SHARED_H
 
-// The atlas (build/generated/decals/decal_atlas.png): DECAL_TILES square tiles of DECAL_TILE
+// The atlas (build/generated/textures/decal_atlas.png): DECAL_TILES square tiles of DECAL_TILE
 // texels side by side. RGB: the multi-channel field (median = the shape with sharp corners; the
 // same value thrice for a mask without an outline); A: the true signed distance (exact EDT).
 // Texel value 0.5 = the edge, 0.5 + d / (2 DECAL_RANGE) at d texels inside.
