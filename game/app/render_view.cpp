@@ -9,6 +9,7 @@
 #include "render/model_loader.h"
 #include "render/ogre_convert.h"
 #include "render/prop_view.h"
+#include "core/rng.h"
 #include "session.h"
 #include "decals/decal_render.h"
 #include "frame/frame.h"
@@ -98,6 +99,16 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     smoke_ = std::make_unique<smoke::SmokeRender>();
     decals_ = std::make_unique<decals::DecalRender>(*scene_, settings.decals);
     frame_->add(*decals_);
+    {   // debug-decals: rays from the start eye in a fixed spread of directions, a hole where each hits.
+        Rng rng(0xdeb6ULL);
+        const Vec3 eye = session.sim().player().eye();
+        for (int i = 0; i < settings.debugDecals; ++i) {
+            const double yaw = rng.uniform01d() * 2 * kPi, pitch = degToRad(-75 + 80 * rng.uniform01d());
+            const Vec3 dir{std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
+            if (auto hit = session.sim().physics().rayCast(eye, eye + dir * 40.0))
+                decals_->ring().add(decals::bulletHole(hit->point, hit->normal, decals_->ring().added()));
+        }
+    }
     frame_->add(*ao_);
     frame_->add(*smoke_);
     // The heightfield mode's height map, over the level's brushes (models stand inside them).

@@ -71,13 +71,14 @@ void main()
     vec3 colour;
     float alpha;
     if (tile == float(DECAL_TILE_BULLET)) {
-        // Torn paint at the rim, a black hole inside it (the outline band: 1.5 texels in).
-        float core = smoothstep(1.5 - w, 1.5 + w, d);
-        colour = mix(vec3(0.22, 0.2, 0.18), vec3(0.01), has(style, DECAL_STYLE_OUTLINE) ? core : 1.0);
+        // Torn paint at the rim, a black hole inside it (the outline band: 3 texels in).
+        float core = smoothstep(3.0 - w, 3.0 + w, d);
+        colour = mix(vec3(0.3, 0.28, 0.25), vec3(0.01), has(style, DECAL_STYLE_OUTLINE) ? core : 1.0);
         alpha = cover;
     } else if (tile == float(DECAL_TILE_SCORCH)) {
+        // Soft across the whole spread (the glow threshold), darkest in the middle.
         colour = vec3(0.02, 0.018, 0.016);
-        alpha = cover;
+        alpha = has(style, DECAL_STYLE_GLOW) ? smoothstep(-DECAL_RANGE, DECAL_RANGE, d) : cover;
     } else if (tile == float(DECAL_TILE_SIGN)) {
         colour = vec3(0.92, 0.9, 0.85);
         alpha = cover;
