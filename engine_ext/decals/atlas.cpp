@@ -4,6 +4,8 @@
 #include "decals/decals_shared.h"
 #include "decals/glyph.h"
 
+#include <cmath>
+
 namespace obscura::decals {
 
 namespace {
@@ -37,7 +39,17 @@ void bakeMaskTile(Image& atlas, int tile, int size, const Mask& mask) {
 Shape tileShape(int tile, const std::string& fontPath) {
     switch (tile) {
         case DECAL_TILE_BULLET: return starShape(0.5, 0.5, 0.44, 0.31, 11);
-        case DECAL_TILE_SCORCH: return starShape(0.5, 0.5, 0.45, 0.36, 17);
+        case DECAL_TILE_SCORCH: {  // an irregular blot: a radius wandering with a few fixed harmonics
+            Shape blot;
+            blot.contours.emplace_back();
+            for (int i = 0; i < 128; ++i) {
+                const double a = 6.283185307179586 * i / 128;
+                const double r = 0.33 + 0.05 * std::sin(3 * a + 1) + 0.04 * std::sin(7 * a + 2) + 0.03 * std::sin(13 * a + 0.5) +
+                                 0.02 * std::sin(23 * a + 4);
+                blot.contours.back().push_back({0.5 + r * std::cos(a), 0.5 + r * std::sin(a)});
+            }
+            return blot;
+        }
         case DECAL_TILE_SIGN: return textShape(fontPath, "EXIT", 0.08);
         case DECAL_TILE_SQUARE: return squareShape(0.5, 0.5, 0.40);
     }
