@@ -42,6 +42,8 @@ struct Settings {
     bool fullscreen = false;
     bool vsync = true;
     double fov = 90;             // horizontal degrees
+    int decals = 256;            // decal cap, oldest recycled (Quake III 256, GoldSrc mp_decals 300); engine_ext/decals
+    int debugDecals = 0;         // debug: this many bullet holes scattered round the start (the decal cost bench)
     // Input
     double mouseSensitivity = 1.0;  // multiplies 0.022 deg per count (Quake's m_yaw)
     bool invertMouse = false;

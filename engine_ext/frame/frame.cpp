@@ -112,6 +112,8 @@ Frame::Frame(Ogre::Viewport& viewport, Ogre::Camera& camera, FrameSettings setti
     const float clear[4] = {0, 0, 0, 1};  // no light, transmittance 1
     noAo_ = constantTexture("Obscura/Frame/NoAO", Ogre::PF_FLOAT32_GR, open);
     noVolume_ = constantTexture("Obscura/Frame/NoVolume", Ogre::PF_FLOAT32_RGBA, clear);
+    const float none[4] = {0, 0, 0, 0};  // no decal: nothing over the albedo
+    noDecals_ = constantTexture("Obscura/Frame/NoDecals", Ogre::PF_FLOAT32_RGBA, none);
     context_.camera = &camera_;
     // The frame's own debug passes.
     own_.push_back(std::make_unique<gbuffer_view::GBufferView>());
@@ -127,6 +129,7 @@ Frame::~Frame() {
     published_.clear();
     Ogre::TextureManager::getSingleton().remove(noAo_);
     Ogre::TextureManager::getSingleton().remove(noVolume_);
+    Ogre::TextureManager::getSingleton().remove(noDecals_);
 }
 
 void Frame::add(Technique& technique) {
@@ -238,6 +241,7 @@ void Frame::publish() {
     published_.clear();
     published_["aoMap"] = noAo_;
     published_["volumeMap"] = noVolume_;
+    published_["decalAlbedo"] = noDecals_;
     for (auto& e : chain_) {
         if (e->stage == Stage::GBuffer && !e->technique) {
             // One 4-target texture, or the split's two 2-target ones (frame.compositor).

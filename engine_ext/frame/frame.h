@@ -90,7 +90,7 @@ private:
     std::string builtKey_;
     std::map<const Technique*, std::pair<std::string, std::string>> off_;  // configuration key -> reason
     std::map<std::string, Ogre::TexturePtr> published_;  // texture-unit name -> texture
-    Ogre::TexturePtr noAo_, noVolume_;  // bound while no AO / no volumes run
+    Ogre::TexturePtr noAo_, noVolume_, noDecals_;  // bound while no AO / no volumes / no decals run
     Ogre::MaterialPtr gbufferFallback_;
     bool split_ = false;  // the G-buffer in two passes (fewer than FRAME_GBUFFER_TARGETS targets)
     Ogre::Technique* addPart(Ogre::Material& material, const Ogre::Technique& gbuffer, int part);

@@ -26,6 +26,7 @@ namespace render { class Hud; class LevelGeometry; class LevelMaterials; class P
 namespace frame { class Frame; }
 namespace smoke { class SmokeRender; }
 namespace ssao { class AmbientOcclusion; }
+namespace decals { class DecalRender; }
 class CombatView;
 class Session;
 
@@ -111,7 +112,8 @@ private:
     std::unique_ptr<render::PropView> props_;
     std::unique_ptr<ssao::AmbientOcclusion> ao_;
     std::unique_ptr<smoke::SmokeRender> smoke_;
-    std::unique_ptr<frame::Frame> frame_;  // the pass order; ao_ and smoke_ plug into it
+    std::unique_ptr<decals::DecalRender> decals_;
+    std::unique_ptr<frame::Frame> frame_;  // the pass order; ao_, decals_ and smoke_ plug into it
     std::unique_ptr<CombatView> combat_;
     std::unique_ptr<render::Hud> hud_;
     std::uint64_t smokeUploaded_ = 0;  // GameSmoke::version() of the fields on the GPU

@@ -11,6 +11,7 @@ uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferDepth;
 uniform sampler2D gbufferLight;
 uniform sampler2D aoMap;        // (AO, depth) at the AO's resolution (engine_ext/ssao), or 1x1 open
+uniform sampler2D decalAlbedo;  // premultiplied decal albedo (gamma) + coverage (engine_ext/decals), or 1x1 clear
 uniform float aoPresent;        // 0: no AO stage runs, AO is 1 everywhere
 uniform vec3 skyAmbient;        // linear RGB, light arriving from above (ObscuraLighting)
 uniform vec3 groundAmbient;     // linear RGB, light bounced from below
@@ -31,6 +32,11 @@ void main()
         fragColour = vec4(-log(max(vec3(1.0) - albedo, vec3(1.0 / 1024.0))) / exposure, 1.0);
         return;
     }
+    // Decals over the albedo, before any light (so the sun, AO and the smoke all see them).
+    ivec2 decalSize = textureSize(decalAlbedo, 0);
+    vec4 decal = texelFetch(decalAlbedo, min(pixel, decalSize - 1), 0);
+    vec3 gammaAlbedo = texelFetch(gbufferAlbedo, pixel, 0).rgb * (1.0 - decal.a) + decal.rgb;
+    albedo = pow(gammaAlbedo, vec3(2.2));
     float ao = aoPresent > 0.5 ? upsampledAo(aoMap, vUv, depth) : 1.0;
     vec3 ambient = mix(groundAmbient, skyAmbient, texelFetch(gbufferNormal, pixel, 0).a);
     vec3 direct = texelFetch(gbufferLight, pixel, 0).rgb;

@@ -1,0 +1,54 @@
+// The frame's decals stage (engine_ext/frame/technique.h): every decal's box drawn (back faces,
+// one batch) into the decal buffer `decals` (RGBA8: premultiplied albedo in gamma, coverage),
+// against the G-buffer's depth and normal; the lighting pass lays it over the albedo
+// (unit decalAlbedo). Decal parameters live in a small float texture, one row a decal.
+#pragma once
+
+#include "decals/decal_list.h"
+#include "frame/technique.h"
+
+#include <OgreMaterial.h>
+#include <OgreTexture.h>
+
+namespace Ogre {
+class ManualObject;
+class SceneManager;
+class SceneNode;
+}  // namespace Ogre
+
+namespace obscura::decals {
+
+class DecalRender : public frame::Technique {
+public:
+    // Off (one stderr line, the frame goes on) when the atlas or the material is missing.
+    DecalRender(Ogre::SceneManager& scene, int capacity);
+    ~DecalRender() override;
+    DecalRender(const DecalRender&) = delete;
+    DecalRender& operator=(const DecalRender&) = delete;
+
+    DecalRing& ring() { return ring_; }
+    // Once a frame before rendering: the boxes and the data texture follow the ring.
+    void update();
+
+    // frame::Technique
+    std::string folder() const override { return "engine_ext/decals"; }
+    frame::Stage stage() const override { return frame::Stage::Decals; }
+    std::string compositor() const override;
+    std::string missingFeature(const frame::Gpu& gpu) const override;
+    void configure(Ogre::CompositionTechnique&) const override;
+    void bind(Ogre::uint32, Ogre::Pass&, frame::Uniforms&, const frame::FrameContext&) override {}
+    Output output() const override { return {"decals", "decalAlbedo"}; }
+
+private:
+    Ogre::SceneManager& scene_;
+    DecalRing ring_;
+    std::uint64_t uploaded_ = ~0ull;
+    bool usable_ = false;
+    mutable bool split_ = false;  // the G-buffer split in two (fewer than 4 targets): other names
+    Ogre::MaterialPtr material_;
+    Ogre::TexturePtr data_;
+    Ogre::ManualObject* boxes_ = nullptr;
+    Ogre::SceneNode* node_ = nullptr;
+};
+
+}  // namespace obscura::decals
