@@ -9,6 +9,8 @@ PACKAGES=(
   # engine and libraries
   libogre-1.12-dev libbullet-dev libopenal-dev libsdl2-dev libboost-program-options-dev
   libimgui-dev libpng-dev
+  # the decal baker's glyph masks (tools/decalbake)
+  libfreetype-dev
   # the ray-traced AO reference (tools/aoref)
   libembree-dev
   # tests
