@@ -95,6 +95,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     frame_ = std::make_unique<frame::Frame>(*viewport_, *camera_, fs);
     ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
     smoke_ = std::make_unique<smoke::SmokeRender>();
+    smoke_->setLights(*scene_);  // the level's point lights (LevelGeometry made them above) light the smoke too
     frame_->add(*ao_);
     frame_->add(*smoke_);
     // The heightfield mode's height map, over the level's brushes (models stand inside them).

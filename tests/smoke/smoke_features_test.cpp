@@ -338,6 +338,106 @@ TEST(SmokeExport, NoGapAtWallsAndCeilings) {
     EXPECT_EQ(clean, 0.f) << "nothing on the clean side";
 }
 
+// The renderer's upload (PF_FLOAT32_RGB): density as simulated (HDR, no clamp: the RG8 export
+// saturates above exportDensityScale), the transmittance towards the sun and the sky visibility;
+// the wall skin takes both lighting channels from the same free cell as its density, so a
+// trilinear sample 2 cm above a sunlit floor is lit like the smoke above it (the floor's own cells
+// are opaque to the light and would halve it).
+TEST(SmokeExport, FloatExportIsHdrAndTheSkinIsLitLikeTheSmoke) {
+    map::Level l;  // a floor, and a roof over the -x side at 2 m
+    l.brushes.push_back(testlevels::box({-4, -0.25, -4}, {4, 0, 4}));
+    l.brushes.push_back(testlevels::box({-4, 2.0, -4}, {-0.25, 2.25, 4}));
+    testlevels::finish(l);
+    SmokeVolume vol = SmokeVolume::create(l, {}, {0, 0.1, 0}, testlevels::small(24));
+    SmokeState& s = vol.mutableState();
+    const GridInfo& g = vol.grid();
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                const std::size_t c = g.index(i, j, k);
+                s.density[c] = s.cellClass[c] == kFluid && g.cellCentre(i, j, k).y < 0.5 ? 3.0f : 0.f;
+            }
+    vol.computeTransmittance({0, 1, 0});
+    vol.computeSkyVisibility();
+    std::vector<float> rgb;
+    std::vector<std::uint8_t> rg8;
+    vol.exportRGBFloat(rgb);
+    vol.exportRG8(rg8);
+    ASSERT_EQ(rgb.size(), 3 * g.cells());
+    std::size_t fluid = 0;
+    for (std::size_t c = 0; c < g.cells(); ++c) {
+        if (s.cellClass[c] != kFluid) continue;
+        ++fluid;
+        ASSERT_EQ(rgb[3 * c], s.density[c]);
+        ASSERT_EQ(rgb[3 * c + 1], vol.transmittance()[c]);
+        ASSERT_EQ(rgb[3 * c + 2], vol.skyVisibility()[c]);
+        if (s.density[c] > 0) ASSERT_EQ(rg8[2 * c], 255) << "the 8-bit export clamps at exportDensityScale (2)";
+    }
+    EXPECT_GT(fluid, 1000u);
+    std::vector<float> channel[3];
+    for (int a = 0; a < 3; ++a) {
+        channel[a].resize(g.cells());
+        for (std::size_t c = 0; c < g.cells(); ++c) channel[a][c] = rgb[3 * c + static_cast<std::size_t>(a)];
+    }
+    auto sampleAt = [&](int a, const Vec3& p) {
+        const Vec3 c = g.toCellCoords(p);
+        return kernels::sample(channel[a].data(), s.dims, static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z));
+    };
+    // The lowest fluid cell of the open column at x = z = 1.875 (a cell centre: no horizontal blend).
+    const Vec3 cc = g.toCellCoords({1.875, 0.3, 1.875});
+    const int ci = static_cast<int>(std::lround(cc.x)), ck = static_cast<int>(std::lround(cc.z));
+    int lowest = 0;
+    while (lowest < g.ny && s.cellClass[g.index(ci, lowest, ck)] != kFluid) ++lowest;
+    ASSERT_LT(lowest, g.ny);
+    const std::size_t bottom = g.index(ci, lowest, ck);
+    const Vec3 nearFloor{g.cellCentre(ci, lowest, ck).x, 0.02, g.cellCentre(ci, lowest, ck).z};
+    std::cout << "  2 cm above the open floor: density " << sampleAt(0, nearFloor) << ", sun " << sampleAt(1, nearFloor) << " (cell above "
+              << vol.transmittance()[bottom] << "), sky " << sampleAt(2, nearFloor) << " (cell above " << vol.skyVisibility()[bottom]
+              << ")\n";
+    EXPECT_NEAR(sampleAt(0, nearFloor), 3.0f, 1e-5f);
+    EXPECT_GT(vol.transmittance()[bottom], 1e-4f) << "0.5 m of density 3 passes e^-6 of the sun: test set-up";
+    EXPECT_NEAR(sampleAt(1, nearFloor), vol.transmittance()[bottom], 1e-3f * vol.transmittance()[bottom] + 1e-9f);
+    EXPECT_NEAR(sampleAt(2, nearFloor), vol.skyVisibility()[bottom], 1e-3f * vol.skyVisibility()[bottom] + 1e-9f);
+}
+
+// Sky visibility: 1 in open air, ~0 under a roof, falling through the smoke as exp(-sigma x the
+// density above) (blurred sideways, so far from edges it is the column's), never rising downwards.
+TEST(SmokeExport, SkyVisibilitySeesRoofsAndSmoke) {
+    map::Level l;  // a floor, and a roof over the -x side at 2 m
+    l.brushes.push_back(testlevels::box({-4, -0.25, -4}, {4, 0, 4}));
+    l.brushes.push_back(testlevels::box({-4, 2.0, -4}, {-0.25, 2.25, 4}));
+    testlevels::finish(l);
+    SmokeVolume vol = SmokeVolume::create(l, {}, {0, 0.1, 0}, testlevels::small(24));
+    SmokeState& s = vol.mutableState();
+    const GridInfo& g = vol.grid();
+    for (float& d : s.density) d = 0.f;
+    vol.computeSkyVisibility();
+    auto at = [&](const Vec3& p) {
+        const Vec3 c = g.toCellCoords(p);
+        return vol.skyVisibility()[g.index(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)),
+                                           static_cast<int>(std::lround(c.z)))];
+    };
+    std::cout << "  no smoke: under the roof " << at({-2.5, 1.0, 0}) << ", in the open " << at({2.5, 1.0, 0}) << "\n";
+    EXPECT_LT(at({-2.5, 1.0, 0}), 1e-3f);
+    EXPECT_GT(at({2.5, 1.0, 0}), 0.999f);
+    // Density 0.5 in the open below 1.5 m: 1 m into it the sky passes about exp(-4 x 0.5 x 1).
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                const std::size_t c = g.index(i, j, k);
+                s.density[c] = s.cellClass[c] == kFluid && g.cellCentre(i, j, k).y < 1.5 ? 0.5f : 0.f;
+            }
+    vol.computeSkyVisibility();
+    const double sigma = vol.settings().shadowSigma;
+    const double expected = std::exp(-sigma * 0.5 * (1.5 - 0.625));  // the cell centred at 0.625 m
+    std::cout << "  0.875 m into density 0.5: " << at({2.0, 0.625, 0}) << " (column estimate " << expected << ")\n";
+    EXPECT_NEAR(at({2.0, 0.625, 0}), expected, 0.1 * expected);
+    const Vec3 col = g.toCellCoords({2.0, 0, 0});
+    const int ci = static_cast<int>(std::lround(col.x)), ck = static_cast<int>(std::lround(col.z));
+    for (int j = g.ny - 2; j >= 0 && g.cellCentre(ci, j, ck).y > 0; --j)  // above the floor
+        EXPECT_LE(vol.skyVisibility()[g.index(ci, j, ck)], vol.skyVisibility()[g.index(ci, j + 1, ck)]) << j;
+}
+
 TEST(SmokeManager, KeepsAtMostNAndDropsFinished) {
     SmokeSettings st = testlevels::small(16);
     st.lifetime = 1.0;
