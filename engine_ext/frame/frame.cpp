@@ -328,6 +328,7 @@ void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
     if (e.technique) return e.technique->bind(passId, pass, u, context_);
     if (passId == kLightingPass) {
         u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
+        u.set("exposure", settings_.exposure);  // undoes the tone map for the sky
     } else if (passId == kOutputPass) {
         u.set("exposure", settings_.exposure);
         u.set("view", view_ == "ao" ? 1.0f : 0.0f);
