@@ -105,10 +105,10 @@ void marchSmoke(vec3 origin, vec3 dir, float maxT, float jitter, inout vec3 ligh
             if (s >= steps) break;
             vec3 p = origin + dir * (t0 + (float(s) + jitter) * dt);
             vec3 cell = smokeSample(i, (p - smokeMin[i]) / smokeSize[i]);
-            // Float densities are never quite 0 where the smoke has been: below 0.002 (the
-            // marched box's threshold, smoke_render.cpp) a step passes 99.8 %, and the noise and
-            // lights are skipped (the 8-bit texture rounded densities under 0.004 to 0).
-            if (cell.r < 0.002) continue;
+            // Float densities are never quite 0 where the smoke has been: below 0.004 (what the
+            // 8-bit texture rounded to 0; the marched box's threshold, smoke_render.cpp) a step
+            // passes 99.6 %, and the noise and lights are skipped.
+            if (cell.r < 0.004) continue;
             // Sub-grid detail: two octaves at 1.3 and 2.9 cycles a metre, drifting upwards, on
             // lattices turned off the world axes.
             vec3 q = kNoiseTurn * (p + vec3(0.0, -0.3 * smokeTime, 0.0));
