@@ -24,7 +24,10 @@ void SmokeManager::step(double dt) {
 }
 
 void SmokeManager::computeTransmittance(const Vec3& towardLight) {
-    for (auto& e : volumes_) e.volume.computeTransmittance(towardLight);
+    for (auto& e : volumes_) {
+        e.volume.computeTransmittance(towardLight);
+        e.volume.computeSkyVisibility();
+    }
 }
 
 void SmokeManager::setMovingObstacles(const std::vector<MovingObstacle>& obstacles) {

@@ -25,7 +25,8 @@ public:
     int spawn(const map::Level& level, const std::vector<TriangleMesh>& meshes, const Vec3& centre);
 
     void step(double dt);  // steps every volume, then drops the finished ones
-    // Every volume's transmittance towards the light (SmokeVolume::computeTransmittance).
+    // Every volume's transmittance towards the light and its sky visibility
+    // (SmokeVolume::computeTransmittance, computeSkyVisibility): what the renderer lights it by.
     void computeTransmittance(const Vec3& towardLight);
     void setMovingObstacles(const std::vector<MovingObstacle>& obstacles);
     // Carves every volume the segment passes through.

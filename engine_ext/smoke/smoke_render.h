@@ -1,9 +1,10 @@
 // OGRE glue of the smoke grenades, the frame's volumetrics stage (engine_ext/frame/technique.h):
-// each live volume's packed fields (density, transmittance towards the sun; SmokeVolume::exportRG8)
-// uploaded to its own PF_RG8 3D texture after the simulation steps, and ray-marched at half
-// resolution against the G-buffer's depth (media/smoke/smoke.compositor, shaders/smoke/). The
-// frame lays the result (volumeMap) over the light before the tone map. Textures follow the
-// volumes' ids: made when one appears, dropped when it finishes.
+// each live volume's fields (density, transmittance towards the sun, sky visibility;
+// SmokeVolume::exportRGBFloat) uploaded to its own PF_FLOAT32_RGB 3D texture after the simulation
+// steps, and ray-marched at half resolution against the G-buffer's depth
+// (media/smoke/smoke.compositor, shaders/smoke/), lit by the sun, the sky and the level's point
+// lights near the smoke. The frame lays the result (volumeMap) over the light before the tone map.
+// Textures follow the volumes' ids: made when one appears, dropped when it finishes.
 #pragma once
 
 #include "frame/technique.h"
@@ -16,6 +17,10 @@
 #include <map>
 #include <vector>
 
+namespace Ogre {
+class SceneManager;
+}
+
 namespace obscura::smoke {
 
 class SmokeRender : public frame::Technique {
@@ -25,10 +30,27 @@ public:
     SmokeRender(const SmokeRender&) = delete;
     SmokeRender& operator=(const SmokeRender&) = delete;
 
+    // A point light that can light the smoke: world position, linear colour (as the level's
+    // surfaces get it), range in metres (the light reaches zero there: (1 - d / range)^2).
+    struct PointLight {
+        Ogre::Vector3 position, colour;
+        float range;
+    };
+    // The point lights of the scene (the level's map lights: OGRE LT_POINT lights, read once;
+    // the sun is lit separately). Call after the level is built.
+    void setLights(Ogre::SceneManager& scene);
+    void setLights(std::vector<PointLight> lights) { lights_ = std::move(lights); }
+
     // Uploads every volume of `manager` when `stepped` (it stepped and computed its transmittance
     // since the last call); `time` is game seconds (the sub-grid noise drifts with it).
     void update(const SmokeManager& manager, bool stepped, float time);
     std::size_t marched() const { return bindings_.size(); }
+    std::size_t lightsBound() const { return bound_.size(); }
+    // Upload cost so far (also logged at exit): seconds exporting (CPU) and blitting into the
+    // textures, and volumes uploaded.
+    double exportSeconds() const { return exportSeconds_; }
+    double uploadSeconds() const { return uploadSeconds_; }
+    std::size_t uploads() const { return uploads_; }
 
     // frame::Technique
     std::string folder() const override { return "engine_ext/smoke"; }
@@ -44,11 +66,15 @@ private:
         Ogre::TexturePtr texture;
         Ogre::Vector3 min, size, occupiedMin, occupiedSize;
     };
+    void chooseLights();
     std::map<int, Ogre::TexturePtr> textures_;
     std::vector<Binding> bindings_;
-    std::vector<std::uint8_t> buffer_;
+    std::vector<float> buffer_;
+    std::vector<PointLight> lights_, bound_;  // all, and those lighting the smoke now
     Ogre::TexturePtr noVolume_;  // 1x1x1, bound to unused units
-    float densityScale_ = 1, time_ = 0;
+    float sigma_ = 4, time_ = 0;
+    double exportSeconds_ = 0, uploadSeconds_ = 0;
+    std::size_t uploads_ = 0;
 };
 
 }  // namespace obscura::smoke

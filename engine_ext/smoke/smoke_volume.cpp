@@ -103,6 +103,7 @@ SmokeVolume SmokeVolume::create(const map::Level& level, const std::vector<Trian
     impl->settings = st;
     impl->pool = pool ? std::move(pool) : std::make_shared<ThreadPool>(st.threads);
     impl->transmittance.assign(s.grid.cells(), 1.f);
+    impl->skyVisibility.assign(s.grid.cells(), 1.f);
     // Prime the flow: a substep of length 0 projects the still air with the emitter's volume
     // source, so the first step's gas already leaves its cells at the expansion's speed (without
     // it the first step's gas stays put and the canister's cells start at 1.4x the gas density).

@@ -1,12 +1,13 @@
 // SmokeVolume: one smoke grenade's cloud, simulated on its own grid (default 64^3 cells of 0.25 m,
 // a 16 m box centred on the detonation point) against the level's brushes and meshes.
-// Plain C++ (no OGRE): the renderer uploads exportRG8() / exportRGFloat() into a 3D texture and
+// Plain C++ (no OGRE): the renderer uploads exportRGBFloat() into a 3D texture and
 // ray-marches it; the game steps it, feeds it moving obstacles and bullet rays (carve).
 //
 // Typical use:
 //   auto vol = SmokeVolume::create(level, meshes, impactPoint);          // throws on bad input
 //   each frame: vol.setMovingObstacles(players); vol.step(dt);
-//               vol.computeTransmittance(towardSun); vol.exportRG8(buffer);  // upload buffer
+//               vol.computeTransmittance(towardSun); vol.computeSkyVisibility();
+//               vol.exportRGBFloat(buffer);  // upload buffer
 //   on a shot:  vol.carve(muzzle, direction, range, 0.3);
 //   when vol.finished(): drop it (SmokeManager does this).
 //
@@ -98,6 +99,12 @@ public:
     // slice before). `towardLight` points from the smoke to the light.
     void computeTransmittance(const Vec3& towardLight);
     const std::vector<float>& transmittance() const;  // grid().cells() values, x fastest; 1 until computed
+    // How open the sky is above each cell, for the renderer's ambient light: exp(-optical depth)
+    // swept down from the grid's top, each slice taking the slice above blurred by a 3x3 binomial
+    // kernel (so it sees a widening cone of sky, not one column), with the smoke at shadowSigma and
+    // built cells (walls, roofs) opaque like computeTransmittance. 1 under open sky, ~0 under a roof.
+    void computeSkyVisibility();
+    const std::vector<float>& skyVisibility() const;  // grid().cells() values; 1 until computed
 
     // Packed for a 3D texture of grid().nx x ny x nz (x fastest, then y, then z). The density
     // exported is the fluid cells' own; a built cell (wall, floor, ceiling, mesh) next to free
@@ -107,6 +114,12 @@ public:
     // the smoke reaches the surface the renderer's depth test stops it at. (Smallest, so a
     // one-cell wall with smoke on one side only exports 0 and shows nothing on its clean side.)
     // Every other cell the smoke cannot enter exports 0.
+    // The wall cells that get a density this way take the transmittance and sky visibility of the
+    // same free neighbour (the one whose density they took), so a trilinear sample near a wall is
+    // lit like the smoke beside it, not darkened by the wall's own (opaque) value.
+    // RGB32F: (density, transmittance, sky visibility) per cell, unscaled (HDR: no clamp); what the
+    // renderer uploads (PF_FLOAT32_RGB).
+    void exportRGBFloat(std::vector<float>& out) const;
     // RG8: R = density / exportDensityScale (clamped to 1), G = transmittance, each 0..255.
     void exportRG8(std::vector<std::uint8_t>& out) const;
     // RG32F: (density, transmittance) pairs, unscaled.

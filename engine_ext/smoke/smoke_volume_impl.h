@@ -1,6 +1,7 @@
 // SmokeVolume's private data (shared by smoke_volume.cpp and smoke_volume_query.cpp).
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <vector>
 
@@ -15,7 +16,9 @@ struct SmokeVolume::Impl {
     std::shared_ptr<ThreadPool> pool;
     std::vector<float> transmittance;  // 1 until computeTransmittance()
     std::vector<float> opticalDepth;   // scratch of computeTransmittance()
+    std::vector<float> skyVisibility;  // 1 until computeSkyVisibility()
     std::vector<float> exportScratch;  // the exported density (exportRG8 / exportRGFloat)
+    std::vector<std::size_t> exportSource;  // the free cell each exported cell's values come from
 };
 
 }  // namespace obscura::smoke

@@ -172,10 +172,17 @@ namespace {
 // so a trilinear sample between the last fluid cell and the surface blends up to two built cells
 // on each axis: six steps in a corner of three surfaces. Every other cell exports 0. The layers
 // grow from a frontier list, so the cost is the wall skin's, not six sweeps of the grid.
-void exportedDensity(const SmokeState& s, std::vector<float>& out) {
+// `source` (when not null) gets, for every cell, the free cell whose values it exports: itself
+// for fluid cells, the neighbour whose density a wall cell took (followed back to free space) for
+// the skin, and the cell itself elsewhere; so the lighting channels can follow the density.
+void exportedDensity(const SmokeState& s, std::vector<float>& out, std::vector<std::size_t>* source = nullptr) {
     const GridInfo& g = s.grid;
     const std::size_t n = g.cells();
     out.assign(n, 0.f);
+    if (source) {
+        source->resize(n);
+        for (std::size_t c = 0; c < n; ++c) (*source)[c] = c;
+    }
     std::vector<std::uint8_t> layer(n, 0);  // l: the l-th layer of built cells
     const std::ptrdiff_t off[6] = {-1, 1, -s.dims.sy, s.dims.sy, -s.dims.sz, s.dims.sz};
     auto inside = [&](std::size_t c, int o) {  // the face neighbour o of c is in the grid
@@ -187,17 +194,22 @@ void exportedDensity(const SmokeState& s, std::vector<float>& out) {
         return at[axis] + step >= 0 && at[axis] + step < size[axis];
     };
     // Layer l's value at built cell c: the least among neighbours that are free space (l = 1) or
-    // of layer l - 1; false if there are none.
+    // of layer l - 1 (the first such neighbour on a tie); false if there are none.
     auto least = [&](std::size_t c, int l, float& value) {
         bool any = false;
+        std::size_t from = c;
         for (int o = 0; o < 6; ++o) {
             if (!inside(c, o)) continue;
             const std::size_t m = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + off[o]);
             if (l == 1 ? s.voxelSolid[m] != 0 : layer[m] != l - 1) continue;
             const float v = l == 1 ? s.density[m] : out[m];
-            value = any ? std::min(value, v) : v;
+            if (!any || v < value) {
+                value = v;
+                from = m;
+            }
             any = true;
         }
+        if (any && source) (*source)[c] = (*source)[from];
         return any;
     };
     std::vector<std::size_t> frontier;
@@ -231,6 +243,55 @@ void exportedDensity(const SmokeState& s, std::vector<float>& out) {
 
 }  // namespace
 
+void SmokeVolume::computeSkyVisibility() {
+    const SmokeState& s = impl_->state;
+    const GridInfo& g = s.grid;
+    std::vector<float>& V = impl_->skyVisibility;
+    std::vector<float>& tau = impl_->opticalDepth;
+    tau.assign(g.cells(), 0.f);
+    const float* den = s.density.data();
+    const std::uint8_t* built = s.voxelSolid.data();
+    constexpr float kOpaque = 12.f;  // as computeTransmittance: a built cell passes e^-12
+    const float halfStep = static_cast<float>(impl_->settings.shadowSigma * g.cellSize) * 0.5f;
+    const std::ptrdiff_t sy = s.dims.sy, sz = s.dims.sz;
+    // The top slice sees the sky through its own half cell.
+    for (int k = 0; k < g.nz; ++k)
+        for (int i = 0; i < g.nx; ++i) {
+            const std::size_t c = g.index(i, g.ny - 1, k);
+            tau[c] = halfStep * den[c] + (built[c] == kVoxelBuilt ? kOpaque : 0.f);
+        }
+    // Each slice below: the slice above blurred by (1 2 1) x (1 2 1) / 16 (edges clamped), plus
+    // half its own density and half the blurred density above.
+    for (int j = g.ny - 2; j >= 0; --j) {
+        impl_->pool->parallelFor(g.nz, [&](int k0, int k1) {
+            for (int k = k0; k < k1; ++k) {
+                const int ka = std::max(k - 1, 0), kb = std::min(k + 1, g.nz - 1);
+                for (int i = 0; i < g.nx; ++i) {
+                    const int ia = std::max(i - 1, 0), ib = std::min(i + 1, g.nx - 1);
+                    const std::size_t up = static_cast<std::size_t>((j + 1) * sy);
+                    auto blur = [&](const float* f) {
+                        auto row = [&](int kk) {
+                            const std::size_t r = up + static_cast<std::size_t>(kk * sz);
+                            return f[r + static_cast<std::size_t>(ia)] + 2.f * f[r + static_cast<std::size_t>(i)] +
+                                   f[r + static_cast<std::size_t>(ib)];
+                        };
+                        return (row(ka) + 2.f * row(k) + row(kb)) * 0.0625f;
+                    };
+                    const std::size_t c = g.index(i, j, k);
+                    tau[c] = blur(tau.data()) + halfStep * (den[c] + blur(den)) + (built[c] == kVoxelBuilt ? kOpaque : 0.f);
+                }
+            }
+        });
+    }
+    const std::size_t cells = g.cells();
+    impl_->pool->parallelFor(64, [&](int c0, int c1) {
+        const std::size_t e = cells * static_cast<std::size_t>(c1) / 64;
+        for (std::size_t i = cells * static_cast<std::size_t>(c0) / 64; i < e; ++i) V[i] = expNeg(tau[i]);
+    });
+}
+
+const std::vector<float>& SmokeVolume::skyVisibility() const { return impl_->skyVisibility; }
+
 void SmokeVolume::exportRG8(std::vector<std::uint8_t>& out) const {
     const SmokeState& s = impl_->state;
     const std::size_t n = s.grid.cells();
@@ -253,6 +314,21 @@ void SmokeVolume::exportRGFloat(std::vector<float>& out) const {
     for (std::size_t c = 0; c < n; ++c) {
         out[2 * c] = density[c];
         out[2 * c + 1] = impl_->transmittance[c];
+    }
+}
+
+void SmokeVolume::exportRGBFloat(std::vector<float>& out) const {
+    const std::size_t n = impl_->state.grid.cells();
+    std::vector<float>& density = impl_->exportScratch;
+    std::vector<std::size_t>& source = impl_->exportSource;
+    exportedDensity(impl_->state, density, &source);
+    out.resize(3 * n);
+    const float* T = impl_->transmittance.data();
+    const float* V = impl_->skyVisibility.data();
+    for (std::size_t c = 0; c < n; ++c) {
+        out[3 * c] = density[c];
+        out[3 * c + 1] = T[source[c]];
+        out[3 * c + 2] = V[source[c]];
     }
 }
 

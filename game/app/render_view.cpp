@@ -97,6 +97,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     frame_ = std::make_unique<frame::Frame>(*viewport_, *camera_, fs);
     ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
     smoke_ = std::make_unique<smoke::SmokeRender>();
+    smoke_->setLights(*scene_);  // the level's point lights (LevelGeometry made them above) light the smoke too
     decals_ = std::make_unique<decals::DecalRender>(*scene_, settings.decals);
     frame_->add(*decals_);
     {   // debug-decals: rays from the start eye in a fixed spread of directions, a hole where each hits.

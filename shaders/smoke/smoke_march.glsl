@@ -1,10 +1,21 @@
 // Ray-marching the smoke grenades' volumes (engine_ext/smoke) in the frame's volumetrics stage,
 // against the G-buffer's linear depth: each view ray is marched from the volume's entry (or the
 // camera, when inside it) to its exit or the first opaque surface, whichever is nearer, so walls and
-// props hide the smoke behind them. Per step: the density from the 3D texture (R, times the
-// export scale) with sub-grid value noise so the 25 cm grid never shows, Beer-Lambert extinction,
-// and in-scattered light = sky/ground ambient + the sun times the volume's own transmittance
-// towards it (G: self-shadowing). The start is jittered per pixel against banding.
+// props hide the smoke behind them. Per step: the density from the 3D texture (R, HDR float) with
+// sub-grid value noise so the 25 cm grid never shows, Beer-Lambert extinction at the solver's own
+// shadowSigma (the march and the self-shadowing agree), and the light scattered towards the eye:
+//   sun    sunColour x the solver's transmittance towards the sun (G) through a Henyey-Greenstein
+//          phase (g = 0.3, forward), plus two weaker, wider "octaves" of multiple scattering
+//          (Wrenninge et al. 2013: transmittance^0.5 and ^0.25, weights 0.5 and 0.25, g halved
+//          each time), so the lit side is bright, the core and the far side a shaded grey
+//   sky    the hemispheric ambient x how open the sky is above the cell (B, swept by the solver
+//          down through smoke and roofs), never below kSmokeIndirect (light bounced in)
+//   lamps  the level's point lights near the smoke (smoke_render.cpp picks at most
+//          SMOKE_MAX_LIGHTS), with the surfaces' falloff (1 - d / range)^2, through the phase,
+//          not shadowed by the smoke (that would be a second march per light).
+// Phases are scaled by pi: light arriving as the surfaces' irradiance E makes a white Lambertian
+// surface send E back; the same light makes smoke send (albedo x pi x phase x E) per unit of
+// opacity: isotropic scattering 0.25 E. The start is jittered per pixel against banding.
 // Needs: inverseView, projScale, flipY, vUv; ObscuraLighting's sun and ambient.
 #include "smoke_shared.h"
 uniform float smokeCount;          // volumes bound (0..SMOKE_MAX_VOLUMES)
@@ -12,18 +23,23 @@ uniform vec3 smokeMin[SMOKE_MAX_VOLUMES];      // world AABB of each volume's gr
 uniform vec3 smokeSize[SMOKE_MAX_VOLUMES];
 uniform vec3 smokeBoxMin[SMOKE_MAX_VOLUMES];   // the part of it holding smoke: only this is marched
 uniform vec3 smokeBoxSize[SMOKE_MAX_VOLUMES];
-uniform sampler3D smokeMap0;
+uniform sampler3D smokeMap0;       // PF_FLOAT32_RGB: density, transmittance to the sun, sky visibility
 uniform sampler3D smokeMap1;
 uniform sampler3D smokeMap2;
 uniform sampler3D smokeMap3;
-uniform float smokeDensityScale;   // the solver's exportDensityScale: texture 1.0 = this density
+uniform float smokeSigma;          // extinction per metre per density unit (SmokeSettings::shadowSigma)
 uniform float smokeTime;           // seconds of game time: the noise drifts
+uniform float smokeLightCount;     // 0..SMOKE_MAX_LIGHTS
+uniform vec4 smokeLightPosition[SMOKE_MAX_LIGHTS];  // world xyz, w = range (m)
+uniform vec4 smokeLightColour[SMOKE_MAX_LIGHTS];    // linear rgb, as the surfaces get it
 uniform vec3 sunDirection;
 uniform vec3 sunColour;
 uniform vec3 skyAmbient;
 uniform vec3 groundAmbient;
-const float kSmokeSigma = 6.0;     // extinction per metre at density 1: 1 m of thick smoke passes 0.25 %
-const vec3 kSmokeAlbedo = vec3(0.82, 0.82, 0.8);  // light grey, a little warm
+const vec3 kSmokeAlbedo = vec3(0.9, 0.9, 0.88);  // single-scattering albedo: light grey, a little warm
+const float kSmokeG = 0.3;         // Henyey-Greenstein asymmetry: smoke scatters somewhat forwards
+const float kSmokeIndirect = 0.3;  // the ambient's share that reaches smoke under a roof (bounced in;
+                                   // the surfaces' ambient there is not darkened by the roof either)
 const float kSmokeStep = 0.25;     // metres: the grid's cell size; finer shows no more detail
 const int kSmokeMaxSteps = 64;     // a 16 m crossing
 // A rotation (orthonormal) for the noise lattice: value noise is blocky along its lattice axes;
@@ -32,12 +48,12 @@ const int kSmokeMaxSteps = 64;     // a 16 m crossing
 // it through the roof: the solver's transmittance now counts walls and roofs.)
 const mat3 kNoiseTurn = mat3(0.00, 0.80, 0.60, -0.80, 0.36, -0.48, -0.60, -0.48, 0.64);
 
-vec2 smokeSample(int i, vec3 uvw)
+vec3 smokeSample(int i, vec3 uvw)
 {
-    if (i == 0) return texture(smokeMap0, uvw).rg;
-    if (i == 1) return texture(smokeMap1, uvw).rg;
-    if (i == 2) return texture(smokeMap2, uvw).rg;
-    return texture(smokeMap3, uvw).rg;
+    if (i == 0) return texture(smokeMap0, uvw).rgb;
+    if (i == 1) return texture(smokeMap1, uvw).rgb;
+    if (i == 2) return texture(smokeMap2, uvw).rgb;
+    return texture(smokeMap3, uvw).rgb;
 }
 
 float smokeHash(vec3 p)
@@ -58,12 +74,23 @@ float smokeNoise(vec3 p)
                    mix(smokeHash(i + vec3(0, 1, 1)), smokeHash(i + vec3(1, 1, 1)), f.x), f.y), f.z);
 }
 
-// Marches every volume along origin + t * dir for t < maxT; light (HDR, exposed) and transmittance
+// Henyey-Greenstein phase x pi (see above): 0.25 for g = 0.
+float smokePhase(float cosTheta, float g)
+{
+    float d = 1.0 + g * g - 2.0 * g * cosTheta;
+    return 0.25 * (1.0 - g * g) / (d * sqrt(d));
+}
+
+// Marches every volume along origin + t * dir for t < maxT; light (HDR) and transmittance
 // accumulate front to back within a volume (volumes are taken in binding order).
 void marchSmoke(vec3 origin, vec3 dir, float maxT, float jitter, inout vec3 light, inout float transmittance)
 {
     vec3 ambient = mix(groundAmbient, skyAmbient, 0.65);  // a cloud sees mostly sky
-    int count = int(smokeCount);
+    // Light travels along -sunDirection; the eye looks along dir: scattering angle cos = dir . sun.
+    float cosSun = dot(dir, sunDirection);
+    vec3 sunPhase = vec3(smokePhase(cosSun, kSmokeG), 0.7 * smokePhase(cosSun, 0.5 * kSmokeG),
+                         0.5 * smokePhase(cosSun, 0.25 * kSmokeG));
+    int count = int(smokeCount), lights = int(smokeLightCount);
     for (int i = 0; i < SMOKE_MAX_VOLUMES; ++i) {
         if (i >= count) break;
         vec3 lo = smokeBoxMin[i], hi = smokeBoxMin[i] + smokeBoxSize[i];
@@ -77,16 +104,29 @@ void marchSmoke(vec3 origin, vec3 dir, float maxT, float jitter, inout vec3 ligh
         for (int s = 0; s < kSmokeMaxSteps; ++s) {
             if (s >= steps) break;
             vec3 p = origin + dir * (t0 + (float(s) + jitter) * dt);
-            vec2 st = smokeSample(i, (p - smokeMin[i]) / smokeSize[i]);
-            if (st.r <= 0.0) continue;
+            vec3 cell = smokeSample(i, (p - smokeMin[i]) / smokeSize[i]);
+            // Float densities are never quite 0 where the smoke has been: below 0.004 (what the
+            // 8-bit texture rounded to 0; the marched box's threshold, smoke_render.cpp) a step
+            // passes 99.6 %, and the noise and lights are skipped.
+            if (cell.r < 0.004) continue;
             // Sub-grid detail: two octaves at 1.3 and 2.9 cycles a metre, drifting upwards, on
             // lattices turned off the world axes.
             vec3 q = kNoiseTurn * (p + vec3(0.0, -0.3 * smokeTime, 0.0));
             float detail = 0.55 + 0.6 * smokeNoise(q * 1.3) + 0.3 * (smokeNoise(kNoiseTurn * q * 2.9) - 0.5);
-            float density = st.r * smokeDensityScale * detail;
-            float stepT = exp(-kSmokeSigma * density * dt);
-            vec3 lit = kSmokeAlbedo * (ambient + sunColour * st.g);
-            light += transmittance * (1.0 - stepT) * lit;
+            float stepT = exp(-smokeSigma * cell.r * detail * dt);
+            float sunT = clamp(cell.g, 0.0, 1.0), sunT2 = sqrt(sunT);
+            vec3 lit = sunColour * dot(sunPhase, vec3(sunT, sunT2, sqrt(sunT2)))
+                     + ambient * mix(kSmokeIndirect, 1.0, clamp(cell.b, 0.0, 1.0));
+            for (int l = 0; l < SMOKE_MAX_LIGHTS; ++l) {
+                if (l >= lights) break;
+                vec3 toLight = smokeLightPosition[l].xyz - p;
+                float d = length(toLight);
+                float f = max(1.0 - d / smokeLightPosition[l].w, 0.0);
+                if (f <= 0.0) continue;
+                float c = dot(dir, toLight) / max(d, 1e-4);
+                lit += smokeLightColour[l].rgb * (f * f * (smokePhase(c, kSmokeG) + 0.5 * smokePhase(c, 0.5 * kSmokeG)));
+            }
+            light += transmittance * (1.0 - stepT) * kSmokeAlbedo * lit;
             transmittance *= stepT;
             if (transmittance < 0.003) return;
         }

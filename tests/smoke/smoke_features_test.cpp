@@ -338,6 +338,143 @@ TEST(SmokeExport, NoGapAtWallsAndCeilings) {
     EXPECT_EQ(clean, 0.f) << "nothing on the clean side";
 }
 
+// The renderer's upload (PF_FLOAT32_RGB): density as simulated (HDR, no clamp: the RG8 export
+// saturates above exportDensityScale), the transmittance towards the sun and the sky visibility;
+// the wall skin takes both lighting channels from the same free cell as its density, so a
+// trilinear sample 2 cm above a sunlit floor is lit like the smoke above it (the floor's own cells
+// are opaque to the light and would halve it).
+TEST(SmokeExport, FloatExportIsHdrAndTheSkinIsLitLikeTheSmoke) {
+    map::Level l;  // a floor, and a roof over the -x side at 2 m
+    l.brushes.push_back(testlevels::box({-4, -0.25, -4}, {4, 0, 4}));
+    l.brushes.push_back(testlevels::box({-4, 2.0, -4}, {-0.25, 2.25, 4}));
+    testlevels::finish(l);
+    SmokeVolume vol = SmokeVolume::create(l, {}, {0, 0.1, 0}, testlevels::small(24));
+    SmokeState& s = vol.mutableState();
+    const GridInfo& g = vol.grid();
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                const std::size_t c = g.index(i, j, k);
+                s.density[c] = s.cellClass[c] == kFluid && g.cellCentre(i, j, k).y < 0.5 ? 3.0f : 0.f;
+            }
+    vol.computeTransmittance({0, 1, 0});
+    vol.computeSkyVisibility();
+    std::vector<float> rgb;
+    std::vector<std::uint8_t> rg8;
+    vol.exportRGBFloat(rgb);
+    vol.exportRG8(rg8);
+    ASSERT_EQ(rgb.size(), 3 * g.cells());
+    std::size_t fluid = 0;
+    for (std::size_t c = 0; c < g.cells(); ++c) {
+        if (s.cellClass[c] != kFluid) continue;
+        ++fluid;
+        ASSERT_EQ(rgb[3 * c], s.density[c]);
+        ASSERT_EQ(rgb[3 * c + 1], vol.transmittance()[c]);
+        ASSERT_EQ(rgb[3 * c + 2], vol.skyVisibility()[c]);
+        if (s.density[c] > 0) ASSERT_EQ(rg8[2 * c], 255) << "the 8-bit export clamps at exportDensityScale (2)";
+    }
+    EXPECT_GT(fluid, 1000u);
+    std::vector<float> channel[3];
+    for (int a = 0; a < 3; ++a) {
+        channel[a].resize(g.cells());
+        for (std::size_t c = 0; c < g.cells(); ++c) channel[a][c] = rgb[3 * c + static_cast<std::size_t>(a)];
+    }
+    auto sampleAt = [&](int a, const Vec3& p) {
+        const Vec3 c = g.toCellCoords(p);
+        return kernels::sample(channel[a].data(), s.dims, static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z));
+    };
+    // The lowest fluid cell of the open column at x = z = 1.875 (a cell centre: no horizontal blend).
+    const Vec3 cc = g.toCellCoords({1.875, 0.3, 1.875});
+    const int ci = static_cast<int>(std::lround(cc.x)), ck = static_cast<int>(std::lround(cc.z));
+    int lowest = 0;
+    while (lowest < g.ny && s.cellClass[g.index(ci, lowest, ck)] != kFluid) ++lowest;
+    ASSERT_LT(lowest, g.ny);
+    const std::size_t bottom = g.index(ci, lowest, ck);
+    const Vec3 nearFloor{g.cellCentre(ci, lowest, ck).x, 0.02, g.cellCentre(ci, lowest, ck).z};
+    std::cout << "  2 cm above the open floor: density " << sampleAt(0, nearFloor) << ", sun " << sampleAt(1, nearFloor) << " (cell above "
+              << vol.transmittance()[bottom] << "), sky " << sampleAt(2, nearFloor) << " (cell above " << vol.skyVisibility()[bottom]
+              << ")\n";
+    EXPECT_NEAR(sampleAt(0, nearFloor), 3.0f, 1e-5f);
+    EXPECT_GT(vol.transmittance()[bottom], 1e-4f) << "0.5 m of density 3 passes e^-6 of the sun: test set-up";
+    EXPECT_NEAR(sampleAt(1, nearFloor), vol.transmittance()[bottom], 1e-3f * vol.transmittance()[bottom] + 1e-9f);
+    EXPECT_NEAR(sampleAt(2, nearFloor), vol.skyVisibility()[bottom], 1e-3f * vol.skyVisibility()[bottom] + 1e-9f);
+}
+
+// Sky visibility: 1 in open air, ~0 under a roof, falling through the smoke as exp(-sigma x the
+// density above) (blurred sideways, so far from edges it is the column's), never rising downwards.
+TEST(SmokeExport, SkyVisibilitySeesRoofsAndSmoke) {
+    map::Level l;  // a floor, and a roof over the -x side at 2 m
+    l.brushes.push_back(testlevels::box({-4, -0.25, -4}, {4, 0, 4}));
+    l.brushes.push_back(testlevels::box({-4, 2.0, -4}, {-0.25, 2.25, 4}));
+    testlevels::finish(l);
+    SmokeVolume vol = SmokeVolume::create(l, {}, {0, 0.1, 0}, testlevels::small(24));
+    SmokeState& s = vol.mutableState();
+    const GridInfo& g = vol.grid();
+    for (float& d : s.density) d = 0.f;
+    vol.computeSkyVisibility();
+    auto at = [&](const Vec3& p) {
+        const Vec3 c = g.toCellCoords(p);
+        return vol.skyVisibility()[g.index(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)),
+                                           static_cast<int>(std::lround(c.z)))];
+    };
+    std::cout << "  no smoke: under the roof " << at({-2.5, 1.0, 0}) << ", in the open " << at({2.5, 1.0, 0}) << "\n";
+    EXPECT_LT(at({-2.5, 1.0, 0}), 1e-3f);
+    EXPECT_GT(at({2.5, 1.0, 0}), 0.999f);
+    // Density 0.5 in the open below 1.5 m: 1 m into it the sky passes about exp(-4 x 0.5 x 1).
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                const std::size_t c = g.index(i, j, k);
+                s.density[c] = s.cellClass[c] == kFluid && g.cellCentre(i, j, k).y < 1.5 ? 0.5f : 0.f;
+            }
+    vol.computeSkyVisibility();
+    const double sigma = vol.settings().shadowSigma;
+    const double expected = std::exp(-sigma * 0.5 * (1.5 - 0.625));  // the cell centred at 0.625 m
+    std::cout << "  0.875 m into density 0.5: " << at({2.0, 0.625, 0}) << " (column estimate " << expected << ")\n";
+    EXPECT_NEAR(at({2.0, 0.625, 0}), expected, 0.1 * expected);
+    const Vec3 col = g.toCellCoords({2.0, 0, 0});
+    const int ci = static_cast<int>(std::lround(col.x)), ck = static_cast<int>(std::lround(col.z));
+    for (int j = g.ny - 2; j >= 0 && g.cellCentre(ci, j, ck).y > 0; --j)  // above the floor
+        EXPECT_LE(vol.skyVisibility()[g.index(ci, j, ck)], vol.skyVisibility()[g.index(ci, j + 1, ck)]) << j;
+}
+
+// A real cloud under a low ceiling that lies mid-cell (2.6 m: the conservative voxeliser makes
+// the cell from 2.55 to 2.8 solid, 5 cm below the surface... or more): 3 s after a grenade, the
+// density the renderer samples (trilinear in the export) just under the ceiling is that of the
+// smoke below it, not a fade to 0, and so is the lighting (no darker rim).
+TEST(SmokeExport, CloudReachesALowCeiling) {
+    map::Level l;
+    testlevels::addRoom(l, {-3.0, 0, -1.3}, {3.0, 2.6, 1.3}, 0.25);
+    testlevels::finish(l);
+    SmokeVolume vol = SmokeVolume::create(l, {}, {0.0, 0.1, 0.0}, testlevels::small(32));
+    for (int i = 0; i < 60; ++i) vol.step(0.05);
+    vol.computeTransmittance({0.3, 1, 0.2});
+    vol.computeSkyVisibility();
+    std::vector<float> rgb;
+    vol.exportRGBFloat(rgb);
+    const GridInfo& g = vol.grid();
+    const SmokeState& s = vol.state();
+    std::vector<float> density(g.cells());
+    for (std::size_t c = 0; c < g.cells(); ++c) density[c] = rgb[3 * c];
+    auto exported = [&](const Vec3& p) {
+        const Vec3 c = g.toCellCoords(p);
+        return kernels::sample(density.data(), s.dims, static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z));
+    };
+    // The mean over the room's middle (x, z in [-1, 1]) at each height.
+    auto layer = [&](double y, bool raw) {
+        double sum = 0;
+        int n = 0;
+        for (double x = -1.0; x <= 1.0; x += 0.1)
+            for (double z = -1.0; z <= 1.0; z += 0.1, ++n) sum += raw ? vol.sampleDensity({x, y, z}) : exported({x, y, z});
+        return sum / n;
+    };
+    std::cout << "  height: exported (raw field)\n";
+    for (double y : {1.6, 2.0, 2.2, 2.35, 2.45, 2.5, 2.55, 2.58}) std::cout << "  " << y << ": " << layer(y, false) << " (" << layer(y, true) << ")\n";
+    const double below = layer(2.2, false), top = layer(2.58, false);
+    EXPECT_GT(below, 0.2) << "the cloud reaches 0.4 m under the ceiling at 3 s: test set-up";
+    EXPECT_GT(top, 0.8 * below) << "2 cm under the ceiling the smoke is as dense as 0.4 m below it";
+}
+
 TEST(SmokeManager, KeepsAtMostNAndDropsFinished) {
     SmokeSettings st = testlevels::small(16);
     st.lifetime = 1.0;
