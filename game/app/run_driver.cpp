@@ -26,9 +26,19 @@ FramePlan LiveDriver::plan(const FrameHost& host) {
     const double frameSeconds = std::chrono::duration<double>(now - last_).count();
     last_ = now;
     // The pause menu pauses the game (the clock does not bank the time either).
-    const int ticks = clock_.advance(frameSeconds);
+    int ticks = clock_.advance(frameSeconds);
     if (host.paused()) return {0, 1.0, frameSeconds * 1000.0};
-    return {ticks, clock_.alpha(), frameSeconds * 1000.0};
+    double alpha = clock_.alpha();
+    // A run of --ticks N stops at exactly N, even when a slow frame banked several ticks: the
+    // last frame shows that tick as it is (alpha 1), the state a headless run ends on.
+    if (maxTicks_ > 0) {
+        const long left = maxTicks_ - static_cast<long>(host.simTick());
+        if (ticks >= left) {
+            ticks = static_cast<int>(left < 0 ? 0 : left);
+            alpha = 1.0;
+        }
+    }
+    return {ticks, alpha, frameSeconds * 1000.0};
 }
 
 bool LiveDriver::finished(const FrameHost& host) const {
