@@ -14,9 +14,20 @@ constexpr double kCarveRadius = 0.8;     // m: clear within 0.4 m, fading to 0.8
 constexpr double kMaxShotRange = 200.0;  // m: the rifle's
 }  // namespace
 
-GameSmoke::GameSmoke(const map::Level& level, std::vector<TriangleMesh> meshes, const Vec3& towardSun, double tickRate)
+namespace {
+smoke::SmokeSettings gridOf(int resolution) {
+    smoke::SmokeSettings s;
+    const double box = s.resolution * s.cellSize;  // 16 m whatever the resolution
+    s.resolution = resolution;
+    s.cellSize = box / resolution;
+    return s;
+}
+}  // namespace
+
+GameSmoke::GameSmoke(const map::Level& level, std::vector<TriangleMesh> meshes, const Vec3& towardSun, double tickRate,
+                     int resolution)
     : level_(level), meshes_(std::move(meshes)), towardSun_(towardSun), tickSeconds_(1.0 / tickRate),
-      ticksPerStep_(ticksFor(kSmokeStepSeconds, tickRate)), manager_(kMaxVolumes) {}
+      ticksPerStep_(ticksFor(kSmokeStepSeconds, tickRate)), manager_(kMaxVolumes, gridOf(resolution)) {}
 
 bool GameSmoke::spawn(const Vec3& where) {
     try {

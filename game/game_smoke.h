@@ -21,7 +21,9 @@ namespace obscura {
 class GameSmoke {
 public:
     // meshes: the misc_models' triangles (obstacles); towardSun: unit, for the self-shadow.
-    GameSmoke(const map::Level& level, std::vector<TriangleMesh> meshes, const Vec3& towardSun, double tickRate);
+    // resolution: grid cells a side (32 or 64) over the same 16 m box.
+    GameSmoke(const map::Level& level, std::vector<TriangleMesh> meshes, const Vec3& towardSun, double tickRate,
+              int resolution = 64);
 
     // Releases smoke at `where` now; false (with the reason on stderr) if no grid fits there.
     bool spawn(const Vec3& where);

@@ -69,7 +69,7 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
       durations_(settings.tickRate),
       colliders_(modelColliders(level_, settings)),
       sim_(level_, simConfig(settings), colliders_),
-      smoke_(level_, colliders_, towardSun, settings.tickRate),
+      smoke_(level_, colliders_, towardSun, settings.tickRate, settings.smokeResolution),
       previousPlayer_(sim_.player()) {
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
 }

@@ -167,7 +167,7 @@ struct Option {
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
                                     "timedemo", "config", "data-dir", "log", "debug-max-render-targets",
-                                    "debug-unsupported-formats"};
+                                    "debug-unsupported-formats", "smoke-resolution"};
 
 struct SettingsParser::Impl {
     std::vector<Option> options;
@@ -244,6 +244,11 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"fullscreen", "fullscreen window", flag(&S::fullscreen, "fullscreen"), true});
     I.add({"vsync", "wait for vertical sync", flag(&S::vsync, "vsync"), true});
     I.add({"fov", "horizontal field of view in degrees (40 to 140)", num(&S::fov, "fov", 40, 140)});
+    I.add({"smoke-resolution", "smoke grid cells a side over its 16 m box: 64 (0.25 m cells) or 32 (0.5 m, an eighth of the cost)",
+           [](S& s, W v, W where) {
+               if (v != "32" && v != "64") fail(where, "smoke-resolution", q(v) + ", expected 32 or 64");
+               s.smokeResolution = std::stoi(v);
+           }});
     I.add({"decals", "decal cap (bullet holes, scorch marks), oldest recycled (1 to 1024)", integer(&S::decals, "decals", 1, 1024)});
     I.add({"debug-decals", "debug: N bullet holes scattered round the start at load, for engine_ext/decals' cost (0 to 1024)",
            integer(&S::debugDecals, "debug-decals", 0, 1024)});

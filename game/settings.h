@@ -42,6 +42,9 @@ struct Settings {
     bool fullscreen = false;
     bool vsync = true;
     double fov = 90;             // horizontal degrees
+    // Smoke grid cells a side over the same 16 m box: 64 (0.25 m cells) or 32 (0.5 m: an eighth of
+    // the solver's cost, for slow machines and long soaks; coarser clouds). engine_ext/smoke
+    int smokeResolution = 64;
     int decals = 256;            // decal cap, oldest recycled (Quake III 256, GoldSrc mp_decals 300); engine_ext/decals
     int debugDecals = 0;         // debug: this many bullet holes scattered round the start (the decal cost bench)
     // Input

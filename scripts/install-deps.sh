@@ -17,6 +17,8 @@ PACKAGES=(
   googletest libgtest-dev
   # headless rendering: Xvfb + Mesa llvmpipe
   xvfb xauth libgl1-mesa-dri
+  # the window tests' real X events (tests/game/window_input_test.sh)
+  xdotool
   # HUD font
   fonts-dejavu-core
   # the level generator's self-check test (tools/levelgen, stdlib only)

@@ -6,6 +6,7 @@
 #include "app/pause_menu.h"
 #include "app/render_view.h"
 #include "app/sdl_keys.h"
+#include "app/x_errors.h"
 #include "render/hud.h"
 #include "render/level_lighting.h"
 #include "replay/replay_recorder.h"
@@ -186,7 +187,14 @@ void GameApp::handleActions() {
         switch (t.action) {
             case Action::ToggleDebug: setPanelVisible(!panel_->visible()); break;
             case Action::Menu: setMenuOpen(!menu_->isOpen()); break;
-            case Action::Screenshot: writeScreenshot("obscura-" + std::to_string(session_->tick()) + ".png"); break;
+            case Action::Screenshot: {
+                // F12 inside the frame: a folder that cannot be written costs the picture, not the game.
+                const std::string path = "obscura-" + std::to_string(session_->tick()) + ".png";
+                const std::string problem = view_->saveScreenshot(path);
+                if (problem.empty()) std::cout << "screenshot " << path << "\n";
+                else std::cerr << "obscura: F12 screenshot: " << problem << "; playing on\n";
+                break;
+            }
             case Action::CycleAo:
                 // Shift+O steps backwards (Shift as it was when O went down).
                 settings_.ssao = ssao::cycleMode(settings_.ssao, t.shift ? -1 : 1);
@@ -213,6 +221,15 @@ void GameApp::tick() {
     if (recorder_ && session_->tick() > 0 && session_->tick() % static_cast<std::uint64_t>(settings_.tickRate) == 0)
         recorder_->hash(static_cast<std::int64_t>(session_->tick()) - 1, session_->sim().stateHashHex());
     session_->step(input_.takeCommand());
+    for (const sim::SimEvent& e : session_->events()) {
+        switch (e.type) {
+            case sim::SimEventType::Shot: ++tally_[0]; break;
+            case sim::SimEventType::Jump: ++tally_[1]; break;
+            case sim::SimEventType::ReloadStart: ++tally_[2]; break;
+            case sim::SimEventType::GrenadeThrow: ++tally_[3]; break;
+            default: break;
+        }
+    }
     // One way: what happened this tick goes to sound, effects and the HUD.
     audio_->onEvents(session_->events());
     view_->onTick(session_->events());
@@ -299,6 +316,7 @@ int GameApp::run() {
         for (const auto& [k, v] : inputSettingValues(settings_)) recorder_->setting(k, v);
     initApp();
     if (!mRoot || getRenderWindow() == nullptr) throw std::runtime_error("OGRE failed to initialise (see the log)");
+    installXErrorHandlers();
     load();
 
     int code = 0;
@@ -329,9 +347,20 @@ int GameApp::run() {
         std::printf("camera-pose %.4f %.4f %.4f %.4f %.4f\n", eye.x, eye.y, eye.z, p.yaw * 180.0 / kPi, p.pitch * 180.0 / kPi);
     }
     if (recorder_) writeRecording();
+    std::cout << summaryLine() << "\n";
+    if (xErrorCount() > 0) std::cerr << "obscura: " << xErrorCount() << " X error(s) in this run\n";
     std::cout << "state-hash " << session_->sim().stateHashHex() << "\n";
     closeApp();
     return code;
+}
+
+std::string GameApp::summaryLine() const {
+    const auto& p = session_->sim().player();
+    char pose[96];
+    std::snprintf(pose, sizeof pose, "yaw %.2f pitch %.2f", p.yaw * 180.0 / kPi + 0.0, p.pitch * 180.0 / kPi + 0.0);
+    return "summary tick " + std::to_string(session_->tick()) + " shots " + std::to_string(tally_[0]) + " jumps " +
+           std::to_string(tally_[1]) + " reloads " + std::to_string(tally_[2]) + " grenades " +
+           std::to_string(tally_[3]) + " ao " + settings_.ssao + " " + pose;
 }
 
 void GameApp::applySetting(const std::string& key, const std::string& value, const std::string& where) {

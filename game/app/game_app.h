@@ -13,6 +13,7 @@
 #include <OgreApplicationContext.h>
 #include <OgreInput.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -81,6 +82,7 @@ private:
     void writeRecording();
     std::string rendererDescription() const;
     std::string dataPath(const std::string& relative) const;
+    std::string summaryLine() const;
 
     Settings settings_;
     const SettingsParser& parser_;
@@ -95,6 +97,10 @@ private:
 
     std::unique_ptr<replay::Script> script_;      // --replay / --timedemo
     std::unique_ptr<replay::Recorder> recorder_;  // --record
+
+    // What the player did this run, counted from the simulation's events (fire, jump, reload,
+    // throw): printed at exit as the `summary` line that scripts driving a window read.
+    std::array<std::uint64_t, 4> tally_{};
 
     bool quit_ = false;
     bool mouseGrabbed_ = false;

@@ -21,8 +21,12 @@
 #include <OgreOverlaySystem.h>
 #include <OgreRTShaderSystem.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -274,6 +278,19 @@ void RenderView::writeScreenshot(const std::string& path) {
     Ogre::Image image(Ogre::PF_BYTE_RGB, t.getWidth(), t.getHeight());
     t.copyContentsToMemory(image.getPixelBox(), image.getPixelBox());
     image.save(path);
+}
+
+std::string RenderView::saveScreenshot(const std::string& path) noexcept {
+    try {
+        // OGRE's own message for a failed save names neither the file nor the reason.
+        if (!std::ofstream(path, std::ios::binary | std::ios::app))
+            return "cannot write '" + path + "': " + std::strerror(errno);
+        writeScreenshot(path);
+        return {};
+    } catch (const std::exception& e) {
+        std::remove(path.c_str());  // no empty or half-written file left behind
+        return "cannot write '" + path + "': " + e.what();
+    }
 }
 
 const render::LevelGeometryStats& RenderView::levelStats() const { return levelGeometry_->stats(); }

@@ -89,7 +89,8 @@ public:
     void draw(const Session& session, const Frame& frame);
     // Waits for the frame's rendering (timed frames include their own GPU work).
     void finishFrame();
-    void writeScreenshot(const std::string& path);
+    void writeScreenshot(const std::string& path);  // throws (load-time callers: --screenshot, captures)
+    std::string saveScreenshot(const std::string& path) noexcept;  // in the frame (F12): the problem, or empty
 
     render::Hud& hud() { return *hud_; }
     const render::LevelGeometryStats& levelStats() const;

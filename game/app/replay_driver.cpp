@@ -74,7 +74,7 @@ void ReplayDriver::afterFrame(FrameHost&) {
     for (const auto* c : due_.captures) writeCapture(c->name);
     for (const auto* c : due_.hashes) {
         const std::string hex = host_.stateHashHex();
-        std::cout << "hash " << tick_ << " " << hex << "\n";
+        std::cout << "hash " << tick_ << " " << hex << std::endl;  // flushed: tools/soak samples the process on it
         if (!c->value.empty() && c->value != hex && !diverged_) {
             diverged_ = true;
             std::cerr << script_.fileName << ":" << c->line << ": replay diverged at tick " << tick_ << ": expected "

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs each fuzz target on a copy of its seed corpus (tests/fuzz/corpus/<target>) for SECONDS
-# seconds, with 2 s per input at most and inputs up to 64 KiB; prints each target's executions and
-# exits non-zero on the first finding (a crash-*/timeout-*/oom-* file under BUILD/findings).
+# seconds, with FUZZ_TIMEOUT s per input at most (default 2; a long run at low priority on a
+# loaded machine needs more, or CPU starvation reads as a hang) and inputs up to 64 KiB; prints
+# each target's executions and exits non-zero on the first finding (a crash-*/timeout-*/oom-* file
+# under BUILD/findings).
 # Usage: tools/fuzz/run_fuzz.sh BUILD_DIR SECONDS [target...]
 set -euo pipefail
 build=${1:?usage: run_fuzz.sh BUILD_DIR SECONDS [target...]}
@@ -22,7 +24,7 @@ for t in "${targets[@]}"; do
   log=$build/$t.log
   set +e
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    "$build/$t" -max_total_time="$seconds" -timeout=2 -max_len=65536 -rss_limit_mb=2048 -print_final_stats=1 \
+    "$build/$t" -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-2}" -max_len=65536 -rss_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$findings/" "$work" ${extra[$t]} >"$log" 2>&1
   rc=$?
   set -e
