@@ -2,17 +2,29 @@
 # The game in a real window, driven by real X events as a player drives it: xdotool sends them
 # through the XTEST extension, so they reach SDL exactly as a keyboard's and mouse's would (the
 # replays inject SDL events instead and cannot see this path). Each case starts the game in a
-# window on the suite's X server, waits until it plays, sends its events, ends the run with
+# window on an X server of its own, waits until it plays, sends its events, ends the run with
 # SIGTERM (which must end it cleanly and promptly) and reads the `summary` line the game prints.
+# The server is private because the suite's is shared: in CI (ctest -j2) another test's window
+# took the keyboard focus mid-case and a jump, a reload and an F1 went to it.
 # Usage: window_input_test.sh GAME CASE   (cases: taps, ao-cycle, panel-mouse, menu-mouse, f12, x-gone)
 set -euo pipefail
 game=$(realpath "${1:?usage: window_input_test.sh GAME CASE}")
 case_name=${2:?usage: window_input_test.sh GAME CASE}
 command -v xdotool >/dev/null || { echo "xdotool is missing (scripts/install-deps.sh installs it)"; exit 1; }
-[ -n "${DISPLAY:-}" ] || { echo "no DISPLAY: run under the suite's X server (xvfb-run)"; exit 1; }
+command -v Xvfb >/dev/null || { echo "Xvfb is missing (scripts/install-deps.sh installs it)"; exit 1; }
 work=$(mktemp -d)
 pid=
-trap '[ -z "$pid" ] || kill -9 "$pid" 2>/dev/null || true; rm -rf "$work"' EXIT
+xvfb_pid=
+trap '[ -z "$pid" ] || kill -9 "$pid" 2>/dev/null || true; [ -z "$xvfb_pid" ] || kill "$xvfb_pid" 2>/dev/null || true; rm -rf "$work"' EXIT
+
+own_x() {  # own_x: starts a private Xvfb (the display number it picks itself); sets DISPLAY, xvfb_pid
+    exec 3< <(exec Xvfb -displayfd 1 -screen 0 640x480x24 -nolisten tcp 2>/dev/null)
+    xvfb_pid=$!
+    local number
+    read -r -t 30 number <&3 || { echo "no private X server started"; exit 1; }
+    export DISPLAY=:$number
+}
+own_x
 
 # A known view: the courtyard, facing yaw 30, level; long enough a run that only SIGTERM ends it.
 start() {  # start [game options...]: sets pid, win, out
@@ -147,15 +159,14 @@ f12)
 x-gone)
     # The X server going away mid-run (a crashed or killed Xvfb, a closed SSH forward): one line
     # in the game's words and exit 1, not Xlib's bare "X Error" or "XIO: fatal IO error".
-    exec 3< <(Xvfb -displayfd 1 -screen 0 640x480x24 -nolisten tcp 2>/dev/null)
-    xvfb_pid=$!
-    read -r -t 30 number <&3 || { echo "no private X server started"; exit 1; }
+    number=${DISPLAY#:}
     out=$work/game.out
-    DISPLAY=:$number "$game" --headless --width 160 --height 90 --hud off --ticks 1000000 >"$out" 2>&1 &
+    "$game" --headless --width 160 --height 90 --hud off --ticks 1000000 >"$out" 2>&1 &
     pid=$!
     for _ in $(seq 600); do grep -q '^level ' "$out" && break; sleep 0.1; done
     sleep 1
     kill -9 "$xvfb_pid"
+    xvfb_pid=
     rc=0
     wait "$pid" || rc=$?
     pid=
