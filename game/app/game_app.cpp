@@ -3,6 +3,7 @@
 
 #include "app/debug_panel.h"
 #include "app/game_audio.h"
+#include "app/leak_check.h"
 #include "app/pause_menu.h"
 #include "app/render_view.h"
 #include "app/sdl_keys.h"
@@ -350,6 +351,10 @@ int GameApp::run() {
     std::cout << summaryLine() << "\n";
     if (xErrorCount() > 0) std::cerr << "obscura: " << xErrorCount() << " X error(s) in this run\n";
     std::cout << "state-hash " << session_->sim().stateHashHex() << "\n";
+    if (runLeakedMemory()) {
+        std::cerr << "obscura: LeakSanitizer found memory lost during the run (report above)\n";
+        code = 1;
+    }
     closeApp();
     return code;
 }
