@@ -192,7 +192,7 @@ TEST(CombatProps, ShotCrateMovesShotBarrelFalls) {
     Simulation sim2(barrelLevel, aimedAt(-std::atan(0.85 / 3.7) * 180 / kPi));  // near its top (0.8 m)
     tapShots(sim2, 3, 15);
     for (int t = 0; t < 90; ++t) sim2.step({});
-    const auto& p = sim2.bodyPoses()[0];
+    const auto p = sim2.bodyPoses()[0];  // a copy: bodyPoses() returns a temporary
     // Its axis (local Y) rotated: tipped more than 45 degrees.
     const double upY = 1 - 2 * (p.qx * p.qx + p.qz * p.qz);
     EXPECT_LT(upY, std::cos(kPi / 4)) << "barrel still standing";
