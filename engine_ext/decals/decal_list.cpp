@@ -23,7 +23,7 @@ std::string validate(const Decal& d) {
     return {};
 }
 
-std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
+BoxFrame boxFrame(const Decal& d) {
     const Vec3 z = normalize(d.normal);
     // A tangent that does not depend on anything but the normal: world up projected, or world x
     // on floors and ceilings.
@@ -31,7 +31,12 @@ std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
     const Vec3 y0 = normalize(ref - z * dot(ref, z));
     const Vec3 x0 = cross(y0, z);
     const double c = std::cos(d.angle), s = std::sin(d.angle);
-    const Vec3 x = x0 * c + y0 * s, y = y0 * c - x0 * s;
+    return {d.position, x0 * c + y0 * s, y0 * c - x0 * s, z};
+}
+
+std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
+    const BoxFrame f = boxFrame(d);
+    const Vec3 &x = f.x, &y = f.y, &z = f.z;
     std::array<float, DECAL_TEXELS * 4> out{};
     auto row = [&](int i, const Vec3& axis, double half) {
         const Vec3 a = axis * (1.0 / half);
@@ -58,6 +63,13 @@ bool DecalRing::add(const Decal& d) {
     next_ = (next_ + 1) % capacity_;
     ++version_;
     ++added_;
+    return true;
+}
+
+bool DecalRing::replace(int slot, const Decal& d) {
+    if (slot < 0 || slot >= size() || !validate(d).empty()) return false;
+    slots_[static_cast<std::size_t>(slot)] = d;
+    ++version_;
     return true;
 }
 
