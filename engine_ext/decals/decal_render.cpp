@@ -6,6 +6,7 @@
 #include <Ogre.h>
 #include <OgreCompositionTechnique.h>
 
+#include <algorithm>
 #include <iostream>
 
 namespace obscura::decals {
@@ -17,7 +18,7 @@ constexpr Ogre::uint8 kDecalQueue = 90;
 const char* const kMaterial = "Obscura/Decals/Box";
 }  // namespace
 
-DecalRender::DecalRender(Ogre::SceneManager& scene, int capacity) : scene_(scene), ring_(capacity) {
+DecalRender::DecalRender(Ogre::SceneManager& scene, int capacity) : scene_(scene), capacity_(std::max(capacity, 1)) {
     auto& rgm = Ogre::ResourceGroupManager::getSingleton();
     material_ = Ogre::MaterialManager::getSingleton().getByName(kMaterial);
     if (!rgm.resourceExistsInAnyGroup("decal_atlas.png") || !material_) {
@@ -28,7 +29,7 @@ DecalRender::DecalRender(Ogre::SceneManager& scene, int capacity) : scene_(scene
         return;
     }
     data_ = Ogre::TextureManager::getSingleton().createManual(
-        "Obscura/Decals/Data", Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_2D, DECAL_TEXELS, static_cast<Ogre::uint>(ring_.capacity()), 0,
+        "Obscura/Decals/Data", Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_2D, DECAL_TEXELS, static_cast<Ogre::uint>(capacity_), 0,
         Ogre::PF_FLOAT32_RGBA, Ogre::TU_DYNAMIC_WRITE_ONLY);
     material_->load();
     Ogre::Pass* pass = material_->getTechnique(0)->getPass(0);
@@ -72,18 +73,19 @@ void DecalRender::configure(Ogre::CompositionTechnique&) const {
     ref("gbufferNormal", FRAME_GBUFFER_NORMAL);
 }
 
-void DecalRender::update() {
-    if (!usable_ || ring_.version() == uploaded_) return;
-    uploaded_ = ring_.version();
-    const auto& slots = ring_.slots();
-    // The data texture: one row a slot.
-    std::vector<float> texels(static_cast<std::size_t>(DECAL_TEXELS) * 4 * ring_.capacity(), 0.0f);
+void DecalRender::update(const std::vector<Decal>& decals, std::uint64_t version) {
+    if (!usable_ || version == uploaded_) return;
+    uploaded_ = version;
+    const std::size_t count = std::min(decals.size(), static_cast<std::size_t>(capacity_));
+    const std::vector<Decal> slots(decals.begin(), decals.begin() + static_cast<std::ptrdiff_t>(count));
+    // The data texture: one row a decal.
+    std::vector<float> texels(static_cast<std::size_t>(DECAL_TEXELS) * 4 * capacity_, 0.0f);
     for (std::size_t i = 0; i < slots.size(); ++i) {
         const auto p = packDecal(slots[i]);
         std::copy(p.begin(), p.end(), texels.begin() + static_cast<std::ptrdiff_t>(i * p.size()));
     }
     data_->getBuffer()->blitFromMemory(
-        Ogre::PixelBox(DECAL_TEXELS, static_cast<Ogre::uint32>(ring_.capacity()), 1, Ogre::PF_FLOAT32_RGBA, texels.data()));
+        Ogre::PixelBox(DECAL_TEXELS, static_cast<Ogre::uint32>(capacity_), 1, Ogre::PF_FLOAT32_RGBA, texels.data()));
     // The boxes: 8 corners each, uv0.x = the slot.
     boxes_->clear();
     if (slots.empty()) return;

@@ -21,14 +21,16 @@ namespace obscura::decals {
 class DecalRender : public frame::Technique {
 public:
     // Off (one stderr line, the frame goes on) when the atlas or the material is missing.
+    // capacity: the most decals update() is given (rows of the data texture).
     DecalRender(Ogre::SceneManager& scene, int capacity);
     ~DecalRender() override;
     DecalRender(const DecalRender&) = delete;
     DecalRender& operator=(const DecalRender&) = delete;
 
-    DecalRing& ring() { return ring_; }
-    // Once a frame before rendering: the boxes and the data texture follow the ring.
-    void update();
+    // Once a frame before rendering: the boxes and the data texture follow `decals` (the game's
+    // list, decal_attach.h), uploaded when `version` moved; decals beyond the capacity are left
+    // out.
+    void update(const std::vector<Decal>& decals, std::uint64_t version);
 
     // frame::Technique
     std::string folder() const override { return "engine_ext/decals"; }
@@ -41,7 +43,7 @@ public:
 
 private:
     Ogre::SceneManager& scene_;
-    DecalRing ring_;
+    int capacity_;
     std::uint64_t uploaded_ = ~0ull;
     bool usable_ = false;
     mutable bool split_ = false;  // the G-buffer split in two (fewer than 4 targets): other names
