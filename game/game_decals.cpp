@@ -2,8 +2,10 @@
 #include "game_decals.h"
 
 #include "core/rng.h"
+#include "decals/decal_sign.h"
 
 #include <cmath>
+#include <iostream>
 
 namespace obscura {
 
@@ -19,7 +21,14 @@ std::vector<decals::BodyFrame> bodyFrames(const sim::Simulation& sim) {
     return out;
 }
 
-GameDecals::GameDecals(const Settings& settings, const sim::Simulation& sim) : set_(settings.decals) {
+GameDecals::GameDecals(const Settings& settings, const map::Level& level, const std::vector<std::string>& searchDirs,
+                       const sim::Simulation& sim)
+    : set_(settings.decals) {
+    std::vector<std::string> warnings;
+    const decals::SignAtlas signs = decals::bakeSigns(decals::readSigns(level, searchDirs, warnings), OBSCURA_DECAL_FONT, warnings);
+    for (const auto& w : warnings) std::cerr << "obscura: " << w << "\n";
+    for (const auto& d : signs.decals) set_.addFixed(d);
+    signTiles_ = signs.tiles;
     // debug-decals: rays from the start eye in a fixed spread of directions, a hole where each hits.
     Rng rng(0xdeb6ULL);
     const Vec3 eye = sim.player().eye();

@@ -70,7 +70,7 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
       colliders_(modelColliders(level_, settings)),
       sim_(level_, simConfig(settings), colliders_),
       smoke_(level_, colliders_, towardSun, settings.tickRate, settings.smokeResolution),
-      decals_(settings, sim_),
+      decals_(settings, level_, modelSearchDirs(settings), sim_),
       previousPlayer_(sim_.player()) {
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
 }

@@ -18,8 +18,9 @@ std::string validate(const Decal& d) {
     if (!std::isfinite(d.angle)) return "non-finite angle";
     if (!(d.width > 1e-4 && d.height > 1e-4 && d.depth > 1e-4) || !std::isfinite(d.width + d.height + d.depth))
         return "zero or non-finite size";
-    if (d.tile < 0 || d.tile >= DECAL_TILES) return "no atlas tile " + std::to_string(d.tile);
+    if (d.tile < 0 || d.tile >= DECAL_MAX_TILES) return "no atlas tile " + std::to_string(d.tile);
     if (!std::isfinite(d.opacity)) return "non-finite opacity";
+    if (d.tinted && !finite(d.colour)) return "non-finite colour";
     return {};
 }
 
@@ -51,6 +52,10 @@ std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
     out[12] = static_cast<float>(d.tile);
     out[13] = static_cast<float>(d.style);
     out[14] = static_cast<float>(std::clamp(d.opacity, 0.0, 1.0));
+    out[16] = static_cast<float>(std::clamp(d.colour.x, 0.0, 1.0));
+    out[17] = static_cast<float>(std::clamp(d.colour.y, 0.0, 1.0));
+    out[18] = static_cast<float>(std::clamp(d.colour.z, 0.0, 1.0));
+    out[19] = d.tinted ? 1.0f : 0.0f;
     return out;
 }
 

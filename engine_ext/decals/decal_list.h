@@ -24,6 +24,8 @@ struct Decal {
     int tile = DECAL_TILE_BULLET;
     int style = 0;  // DECAL_STYLE_* bits
     double opacity = 1;
+    bool tinted = false;  // colour (gamma, 0..1) replaces the tile's own (signs' _color)
+    Vec3 colour{1, 1, 1};
 };
 
 // A decal box's frame: centre and unit axes (x, y across, z the projection axis = the normal;
@@ -37,7 +39,7 @@ BoxFrame boxFrame(const Decal& d);
 std::string validate(const Decal& d);
 
 // The DECAL_TEXELS x 4 floats the shader reads for a decal (decals_shared.h): three rows of the
-// world -> box matrix (box = [-1, 1]^3) and (tile, style, opacity, 0).
+// world -> box matrix (box = [-1, 1]^3), (tile, style, opacity, 0) and (colour, tinted).
 std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d);
 
 class DecalRing {

@@ -102,7 +102,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     smoke_ = std::make_unique<smoke::SmokeRender>();
     smoke_->setLights(*scene_);  // the level's point lights (LevelGeometry made them above) light the smoke too
     // Room for every decal the session can hold: the ring's cap and the fixed ones (signs).
-    decals_ = std::make_unique<decals::DecalRender>(*scene_, session.decals().set().capacity());
+    decals_ = std::make_unique<decals::DecalRender>(*scene_, session.decals().set().capacity(), session.decals().signTiles());
     frame_->add(*decals_);
     frame_->add(*ao_);
     frame_->add(*smoke_);
