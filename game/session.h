@@ -1,5 +1,5 @@
 // One game session in plain C++ (no OGRE): the level, its misc_model colliders read by
-// engine_ext/mesh, the simulation, the smoke and the little presentation state that follows
+// engine_ext/mesh, the simulation, the smoke, the decals and the little presentation state that follows
 // the ticks (the previous player pose for interpolation, the HUD's hit marker). The game owns it
 // and advances it one tick at a time; rendering, sound and the HUD only read it.
 #pragma once
