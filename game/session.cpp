@@ -70,6 +70,7 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
       colliders_(modelColliders(level_, settings)),
       sim_(level_, simConfig(settings), colliders_),
       smoke_(level_, colliders_, towardSun, settings.tickRate, settings.smokeResolution),
+      decals_(settings, level_, modelSearchDirs(settings), sim_),
       previousPlayer_(sim_.player()) {
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
 }
@@ -79,6 +80,7 @@ void Session::step(const sim::PlayerCommand& cmd) {
     sim_.step(cmd);
     const auto& events = sim_.events();
     smoke_.onTick(events, sim_);
+    decals_.onTick(events, sim_);
     hitMarker_ = std::max(0.0, hitMarker_ - durations_.hitMarkerFadePerTick);
     for (const auto& e : events)
         if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;

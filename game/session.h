@@ -1,11 +1,12 @@
 // One game session in plain C++ (no OGRE): the level, its misc_model colliders read by
-// engine_ext/mesh, the simulation, the smoke and the little presentation state that follows
+// engine_ext/mesh, the simulation, the smoke, the decals and the little presentation state that follows
 // the ticks (the previous player pose for interpolation, the HUD's hit marker). The game owns it
 // and advances it one tick at a time; rendering, sound and the HUD only read it.
 #pragma once
 
 #include "core/triangle_mesh.h"
 #include "core/vec3.h"
+#include "game_decals.h"
 #include "game_smoke.h"
 #include "map/level.h"
 #include "settings.h"
@@ -34,13 +35,14 @@ public:
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
 
-    // One fixed tick: the simulation, then the smoke and the hit marker from its events.
+    // One fixed tick: the simulation, then the smoke, the decals and the hit marker from its events.
     void step(const sim::PlayerCommand& cmd);
     void spawnSmoke(const Vec3& where) { smoke_.spawn(where); }
 
     const map::Level& level() const { return level_; }
     const sim::Simulation& sim() const { return sim_; }
     const GameSmoke& smoke() const { return smoke_; }
+    const GameDecals& decals() const { return decals_; }
     const std::vector<sim::SimEvent>& events() const { return sim_.events(); }
     std::uint64_t tick() const { return sim_.tick(); }
     const TickDurations& durations() const { return durations_; }
@@ -54,6 +56,7 @@ private:
     std::vector<TriangleMesh> colliders_;  // the misc_models' triangles, world space
     sim::Simulation sim_;
     GameSmoke smoke_;
+    GameDecals decals_;
     sim::PlayerState previousPlayer_;
     double hitMarker_ = 0;  // 1 at a hit, fading over kHitMarkerFadeSeconds
 };

@@ -18,12 +18,13 @@ std::string validate(const Decal& d) {
     if (!std::isfinite(d.angle)) return "non-finite angle";
     if (!(d.width > 1e-4 && d.height > 1e-4 && d.depth > 1e-4) || !std::isfinite(d.width + d.height + d.depth))
         return "zero or non-finite size";
-    if (d.tile < 0 || d.tile >= DECAL_TILES) return "no atlas tile " + std::to_string(d.tile);
+    if (d.tile < 0 || d.tile >= DECAL_MAX_TILES) return "no atlas tile " + std::to_string(d.tile);
     if (!std::isfinite(d.opacity)) return "non-finite opacity";
+    if (d.tinted && !finite(d.colour)) return "non-finite colour";
     return {};
 }
 
-std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
+BoxFrame boxFrame(const Decal& d) {
     const Vec3 z = normalize(d.normal);
     // A tangent that does not depend on anything but the normal: world up projected, or world x
     // on floors and ceilings.
@@ -31,7 +32,12 @@ std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
     const Vec3 y0 = normalize(ref - z * dot(ref, z));
     const Vec3 x0 = cross(y0, z);
     const double c = std::cos(d.angle), s = std::sin(d.angle);
-    const Vec3 x = x0 * c + y0 * s, y = y0 * c - x0 * s;
+    return {d.position, x0 * c + y0 * s, y0 * c - x0 * s, z};
+}
+
+std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
+    const BoxFrame f = boxFrame(d);
+    const Vec3 &x = f.x, &y = f.y, &z = f.z;
     std::array<float, DECAL_TEXELS * 4> out{};
     auto row = [&](int i, const Vec3& axis, double half) {
         const Vec3 a = axis * (1.0 / half);
@@ -46,6 +52,10 @@ std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d) {
     out[12] = static_cast<float>(d.tile);
     out[13] = static_cast<float>(d.style);
     out[14] = static_cast<float>(std::clamp(d.opacity, 0.0, 1.0));
+    out[16] = static_cast<float>(std::clamp(d.colour.x, 0.0, 1.0));
+    out[17] = static_cast<float>(std::clamp(d.colour.y, 0.0, 1.0));
+    out[18] = static_cast<float>(std::clamp(d.colour.z, 0.0, 1.0));
+    out[19] = d.tinted ? 1.0f : 0.0f;
     return out;
 }
 
@@ -58,6 +68,13 @@ bool DecalRing::add(const Decal& d) {
     next_ = (next_ + 1) % capacity_;
     ++version_;
     ++added_;
+    return true;
+}
+
+bool DecalRing::replace(int slot, const Decal& d) {
+    if (slot < 0 || slot >= size() || !validate(d).empty()) return false;
+    slots_[static_cast<std::size_t>(slot)] = d;
+    ++version_;
     return true;
 }
 

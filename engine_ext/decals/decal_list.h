@@ -24,13 +24,22 @@ struct Decal {
     int tile = DECAL_TILE_BULLET;
     int style = 0;  // DECAL_STYLE_* bits
     double opacity = 1;
+    bool tinted = false;  // colour (gamma, 0..1) replaces the tile's own (signs' _color)
+    Vec3 colour{1, 1, 1};
 };
+
+// A decal box's frame: centre and unit axes (x, y across, z the projection axis = the normal;
+// x and y from the normal alone, world up projected or world x on floors, turned by the angle).
+struct BoxFrame {
+    Vec3 centre, x, y, z;
+};
+BoxFrame boxFrame(const Decal& d);
 
 // Empty when the decal can be drawn; else what is wrong, in words ("zero size", "non-finite ...").
 std::string validate(const Decal& d);
 
 // The DECAL_TEXELS x 4 floats the shader reads for a decal (decals_shared.h): three rows of the
-// world -> box matrix (box = [-1, 1]^3) and (tile, style, opacity, 0).
+// world -> box matrix (box = [-1, 1]^3), (tile, style, opacity, 0) and (colour, tinted).
 std::array<float, DECAL_TEXELS * 4> packDecal(const Decal& d);
 
 class DecalRing {
@@ -38,6 +47,11 @@ public:
     explicit DecalRing(int capacity);  // clamped to 1..DECAL_MAX_CAP
     // Adds `d` (the oldest one recycled when full); false (and nothing added) when invalid.
     bool add(const Decal& d);
+    // The slot the next add() fills.
+    int nextSlot() const { return next_; }
+    // Slot `slot`'s decal moved (a decal on a prop following it); false (nothing changed) when
+    // invalid or no such slot. Not a new decal: added() stays.
+    bool replace(int slot, const Decal& d);
     void clear();
     int capacity() const { return capacity_; }
     int size() const { return static_cast<int>(slots_.size()); }

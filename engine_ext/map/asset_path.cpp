@@ -18,6 +18,16 @@ bool within(const fs::path& file, const fs::path& root) {
 }
 }  // namespace
 
+std::vector<std::string> levelAssetRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs) {
+    const fs::path levelDir = fs::path(levelPath).parent_path();
+    std::vector<std::string> roots = {(levelDir.empty() ? fs::path(".") : levelDir).string()};
+    for (const std::string& dir : searchDirs) {
+        roots.push_back((fs::path(dir) / "media").string());
+        roots.push_back((fs::path(dir) / ".." / "shared").string());
+    }
+    return roots;
+}
+
 bool isBareName(const std::string& name) {
     return !name.empty() && name.find('/') == std::string::npos && name.find('\\') == std::string::npos && name != "." &&
            name != "..";

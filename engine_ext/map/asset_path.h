@@ -19,6 +19,10 @@ struct AssetPath {
 // is no file anywhere gives neither (the caller may look a bare name up elsewhere).
 AssetPath resolveAsset(const std::string& name, const std::vector<std::string>& searchDirs, const std::vector<std::string>& roots);
 
+// The roots a level's files (misc_model meshes, decal_sign images) may resolve into: the level's
+// folder, and `media/` and `../shared` of each search folder.
+std::vector<std::string> levelAssetRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs);
+
 // True if `name` is a bare file name (no folder part): only such a name may be looked up in a
 // resource group, whose own locations are the game's.
 bool isBareName(const std::string& name);

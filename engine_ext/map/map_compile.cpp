@@ -98,7 +98,7 @@ bool isKnownClass(const std::string& c) {
     static const char* prefixes[] = {"func_", "trigger_", "info_player_", "light", "target_", "prop_"};
     for (const char* p : prefixes)
         if (startsWith(c, p)) return true;
-    static const std::set<std::string> exact = {"worldspawn", "misc_model", "info_sign", "smoke_volume", "path_corner",
+    static const std::set<std::string> exact = {"worldspawn", "misc_model", "info_sign", "decal_sign", "smoke_volume", "path_corner",
                                                 "info_null", "info_notnull", "info_teleport_destination"};
     return exact.count(c) != 0;
 }

@@ -65,13 +65,7 @@ void appendTriangles(const Ogre::VertexData* vd, const Ogre::IndexData* id, cons
 }  // namespace
 
 std::vector<std::string> modelRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs) {
-    const fs::path levelDir = fs::path(levelPath).parent_path();
-    std::vector<std::string> roots = {(levelDir.empty() ? fs::path(".") : levelDir).string()};
-    for (const std::string& dir : searchDirs) {
-        roots.push_back((fs::path(dir) / "media").string());
-        roots.push_back((fs::path(dir) / ".." / "shared").string());
-    }
-    return roots;
+    return map::levelAssetRoots(levelPath, searchDirs);
 }
 
 TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,

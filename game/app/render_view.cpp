@@ -9,7 +9,6 @@
 #include "render/model_loader.h"
 #include "render/ogre_convert.h"
 #include "render/prop_view.h"
-#include "core/rng.h"
 #include "session.h"
 #include "decals/decal_render.h"
 #include "frame/frame.h"
@@ -102,18 +101,9 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
     smoke_ = std::make_unique<smoke::SmokeRender>();
     smoke_->setLights(*scene_);  // the level's point lights (LevelGeometry made them above) light the smoke too
-    decals_ = std::make_unique<decals::DecalRender>(*scene_, settings.decals);
+    // Room for every decal the session can hold: the ring's cap and the fixed ones (signs).
+    decals_ = std::make_unique<decals::DecalRender>(*scene_, session.decals().set().capacity(), session.decals().signTiles());
     frame_->add(*decals_);
-    {   // debug-decals: rays from the start eye in a fixed spread of directions, a hole where each hits.
-        Rng rng(0xdeb6ULL);
-        const Vec3 eye = session.sim().player().eye();
-        for (int i = 0; i < settings.debugDecals; ++i) {
-            const double yaw = rng.uniform01d() * 2 * kPi, pitch = degToRad(-75 + 80 * rng.uniform01d());
-            const Vec3 dir{std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
-            if (auto hit = session.sim().physics().rayCast(eye, eye + dir * 40.0))
-                decals_->ring().add(decals::bulletHole(hit->point, hit->normal, decals_->ring().added()));
-        }
-    }
     frame_->add(*ao_);
     frame_->add(*smoke_);
     // The heightfield mode's height map, over the level's brushes (models stand inside them).
@@ -195,15 +185,6 @@ void RenderView::resized(int width, int height, double horizontalFov) {
 
 void RenderView::onTick(const std::vector<sim::SimEvent>& events) {
     combat_->onTick(events);
-    // Decals: a hole at every rifle impact on the level or a prop, a scorch under each detonation
-    // (placed from the event and the count so far alone: the same in every replay).
-    auto& ring = decals_->ring();
-    for (const auto& e : events) {
-        if (e.type == sim::SimEventType::Impact && (e.surface == sim::Surface::Level || e.surface == sim::Surface::Prop))
-            ring.add(decals::bulletHole(e.position, e.normal, ring.added()));
-        else if (e.type == sim::SimEventType::GrenadeDetonate)
-            ring.add(decals::scorch(e.position, ring.added()));
-    }
 }
 
 void RenderView::update(const Session& session, double alpha) {
@@ -260,7 +241,7 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     const GameSmoke& smoke = session.smoke();
     smoke_->update(smoke.manager(), smoke.version() != smokeUploaded_, static_cast<float>(smoke.seconds()));
     smokeUploaded_ = smoke.version();
-    decals_->update();
+    decals_->update(session.decals().list(), session.decals().version());
     frame_->update(static_cast<float>(smoke.seconds()));
     root_.renderOneFrame();
 }

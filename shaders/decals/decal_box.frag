@@ -17,6 +17,7 @@ uniform sampler2D decalData;
 uniform mat4 inverseView;
 uniform mat4 projection;
 uniform vec4 viewportSize;  // width, height, 1/width, 1/height
+uniform float atlasTiles;   // tiles side by side in decalAtlas: DECAL_TILES + the level's signs
 in vec3 vViewPos;
 flat in int vSlot;
 layout(location = 0) out vec4 fragColour;
@@ -28,8 +29,8 @@ bool has(float style, float bit) { return mod(floor(style / bit), 2.0) > 0.5; }
 float distanceAt(vec2 uv, float tile, bool msdf, vec2 grad)
 {
     float inset = 0.5 / float(DECAL_TILE);
-    vec2 atlasUv = vec2((tile + clamp(uv.x, inset, 1.0 - inset)) / float(DECAL_TILES), clamp(uv.y, inset, 1.0 - inset));
-    vec4 t = textureGrad(decalAtlas, atlasUv, vec2(grad.x / float(DECAL_TILES), 0.0), vec2(0.0, grad.y));
+    vec2 atlasUv = vec2((tile + clamp(uv.x, inset, 1.0 - inset)) / atlasTiles, clamp(uv.y, inset, 1.0 - inset));
+    vec4 t = textureGrad(decalAtlas, atlasUv, vec2(grad.x / atlasTiles, 0.0), vec2(0.0, grad.y));
     float v = msdf ? median3(t.rgb) : t.a;
     return (v - 0.5) * 2.0 * DECAL_RANGE;
 }
@@ -45,6 +46,7 @@ void main()
     vec4 r1 = texelFetch(decalData, ivec2(1, vSlot), 0);
     vec4 r2 = texelFetch(decalData, ivec2(2, vSlot), 0);
     vec4 info = texelFetch(decalData, ivec2(3, vSlot), 0);
+    vec4 tint = texelFetch(decalData, ivec2(4, vSlot), 0);
     vec3 box = vec3(dot(r0.xyz, world) + r0.w, dot(r1.xyz, world) + r1.w, dot(r2.xyz, world) + r2.w);
     if (any(greaterThan(abs(box), vec3(1.0)))) discard;
 
@@ -86,6 +88,7 @@ void main()
         colour = vec3(0.8, 0.62, 0.1);  // a plate
         alpha = cover;
     }
+    if (tint.w > 0.5) colour = tint.rgb;
     if (has(style, DECAL_STYLE_OUTLINE) && tile != float(DECAL_TILE_BULLET)) {
         float band = smoothstep(-w, w, d) * (1.0 - smoothstep(1.0 - w, 1.0 + w, d));
         colour = mix(colour, vec3(0.02), band);

@@ -14,12 +14,17 @@
 #define DECAL_TILE_SCORCH 1   // an irregular blot, drawn soft (the glow option)
 #define DECAL_TILE_SIGN 2     // text from a font (multi-channel)
 #define DECAL_TILE_SQUARE 3   // a square plate (multi-channel: sharp corners)
-#define DECAL_TILES 4
+#define DECAL_TILES 4          // the tiles baked at build time
+// Signs (decal_sign in a .map) get tiles of their own, baked at level load after the build's:
+// the atlas in use is DECAL_TILES + that many tiles wide (uniform atlasTiles), at most
+// DECAL_MAX_TILES: 32 x 64 = 2048 texels, the width every GL 3.3 driver we met takes.
+#define DECAL_MAX_TILES 32
 
 // Per-decal data: DECAL_TEXELS RGBA32F texels a decal in a DECAL_TEXELS x cap data texture.
 //   0..2: rows of the world -> decal-box matrix (box = [-1, 1]^3, projection along the box's z)
-//   3: (tile, style, opacity, seed)
-#define DECAL_TEXELS 4
+//   3: (tile, style, opacity, 0)
+//   4: (tint r, g, b, tinted): a sign's colour (gamma) replaces its tile's own when tinted > 0.5
+#define DECAL_TEXELS 5
 // Styles (combinable bits): how the field becomes coverage and colour.
 #define DECAL_STYLE_SMOOTH 1.0   // smoothstep over one screen pixel (else a plain alpha test)
 #define DECAL_STYLE_OUTLINE 2.0  // a dark band just inside the edge

@@ -54,7 +54,7 @@ TEST(DecalRing, BadDecalsAreRefusedWithAReason) {
     d.angle = inf;
     EXPECT_EQ(validate(d), "non-finite angle");
     d = Decal{};
-    d.tile = DECAL_TILES;
+    d.tile = DECAL_MAX_TILES;
     EXPECT_NE(validate(d).find("tile"), std::string::npos);
     EXPECT_FALSE(ring.add(d));
     EXPECT_EQ(ring.size(), 0);

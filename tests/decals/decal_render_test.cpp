@@ -77,3 +77,26 @@ TEST(DecalRender, HolesWhereTheRifleHitsAndTheCapRecycles) {
     EXPECT_LT(full.lighter + one.lighter, 10);    // decals only darken: nothing else moved
     fs::remove_all(dir);
 }
+
+// A level whose decal_signs are mostly bad (tests/decals/levels/bad_signs.map) still loads and
+// runs: one "decal_sign skipped" line a bad sign on stderr, the good ones drawn (the frame has the
+// green "EXIT" sign's pixels where the player looks).
+TEST(DecalRender, BadSignsAreSkippedAndTheLevelStillLoads) {
+    const fs::path dir = fs::temp_directory_path() / ("obscura_decal_signs_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string shot = (dir / "signs.png").string();
+    const std::string cmd = "cd " + std::string(OBSCURA_SOURCE_DIR) + " && XDG_CACHE_HOME=" + (dir / "cache").string() + " " +
+                            OBSCURA_GAME + " --headless --ticks 3 --width 640 --height 360 --level tests/decals/levels/bad_signs.map" +
+                            " --start-pose '5 1.65 -4 0 0' --screenshot " + shot + " 2>&1";
+    const auto r = testing_support::runProcess(cmd);
+    ASSERT_EQ(r.code, 0) << r.out;
+    int skipped = 0;
+    for (std::size_t at = 0; (at = r.out.find(": decal_sign skipped: ", at)) != std::string::npos; ++at) ++skipped;
+    EXPECT_EQ(skipped, 14) << r.out;  // every bad sign in the file, no good one
+    const Image im = readPng(shot);
+    int green = 0;  // the sign's _color "0 200 50" under the room's light
+    for (std::size_t i = 0; i + 3 < im.rgba.size(); i += 4)
+        if (im.rgba[i + 1] > 60 && im.rgba[i + 1] > 2 * im.rgba[i] && im.rgba[i + 1] > 2 * im.rgba[i + 2]) ++green;
+    EXPECT_GT(green, 100) << shot;
+    fs::remove_all(dir);
+}

@@ -182,6 +182,16 @@ add(box(2, 43.75, 0, 2.5, 44.25, 2.25, "metal_floor"))  # its supports
 add(box(8, 43.75, 0, 8.5, 44.25, 2.25, "metal_floor"))
 add(box(2, 43.5, 2.5, 11.5, 43.75, 3.5, "metal_floor"))  # railing
 entity("prop_crate", origin=point(4, 48, 2.5), size="0.75")
+# Painted signs (decal_sign, engine_ext/decals: distance-field decals projected onto the plaster):
+# on walls no replay capture looked at before them. "ROOM B" on the south wall by the door, facing
+# in, its centre at the standing eye's height (tests/replay/scripts/decal_signs.replay looks at
+# it from 0.4 m); "UP" over the stairs; "EXIT" on the west wall, glowing.
+entity("decal_sign", origin=point(5, 38, 1.625), angle="90", text="ROOM B", size="1.2",
+       _color="0.15 0.2 0.45", style="smooth shadow")
+entity("decal_sign", origin=point(16, 42, 3.25), angle="180", text="UP", size="0.8",
+       _color="0.7 0.12 0.05", style="smooth outline")
+entity("decal_sign", origin=point(2, 40.5, 1.625), angle="0", text="EXIT", size="0.8",
+       _color="0.1 0.6 0.15", style="smooth glow")
 
 # --- Firing range: 42 x 6 m, 5 m high, reached from the courtyard through a corridor.
 room(10, 3, 52, 9, 5, "concrete", "concrete", "concrete", doors={"n": [(30.5, DOOR_W, DOOR_H)]})
