@@ -28,7 +28,7 @@ for t in "${targets[@]}"; do
     -artifact_prefix="$findings/" "$work" ${extra[$t]} >"$log" 2>&1
   rc=$?
   set -e
-  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  runs=$(grep -a -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   found=$(ls "$findings" | wc -l)
   echo "$t: $runs executions in ${seconds} s, corpus $(ls "$work" | wc -l) inputs, findings $found (exit $rc)"
   if [ $rc -ne 0 ] || [ "$found" -ne 0 ]; then
