@@ -4,6 +4,7 @@
 #include "core/rng.h"
 #include "decals/decal_sign.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -29,12 +30,24 @@ GameDecals::GameDecals(const Settings& settings, const map::Level& level, const 
     for (const auto& w : warnings) std::cerr << "obscura: " << w << "\n";
     for (const auto& d : signs.decals) set_.addFixed(d);
     signTiles_ = signs.tiles;
-    // debug-decals: rays from the start eye in a fixed spread of directions, a hole where each hits.
+    // debug-decals: rays from the start eye in a fixed spread of directions, a hole where each hits:
+    // all round (75 degrees down to 5 up), or uniform over a cone about the start view.
     Rng rng(0xdeb6ULL);
     const Vec3 eye = sim.player().eye();
+    const double coneCos = std::cos(settings.debugDecalsCone * kPi / 180);
+    const double viewYaw = sim.player().yaw, viewPitch = sim.player().pitch;
+    const Vec3 forward{-std::sin(viewYaw) * std::cos(viewPitch), std::sin(viewPitch), -std::cos(viewYaw) * std::cos(viewPitch)};
+    const Vec3 right = normalize(cross(forward, Vec3{0, 1, 0})), up = cross(right, forward);
     for (int i = 0; i < settings.debugDecals; ++i) {
-        const double yaw = rng.uniform01d() * 2 * kPi, pitch = (-75 + 80 * rng.uniform01d()) * kPi / 180;
-        const Vec3 dir{std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
+        Vec3 dir;
+        if (settings.debugDecalsCone > 0) {
+            const double c = 1 - rng.uniform01d() * (1 - coneCos), s = std::sqrt(std::max(0.0, 1 - c * c));
+            const double phi = rng.uniform01d() * 2 * kPi;
+            dir = forward * c + right * (s * std::cos(phi)) + up * (s * std::sin(phi));
+        } else {
+            const double yaw = rng.uniform01d() * 2 * kPi, pitch = (-75 + 80 * rng.uniform01d()) * kPi / 180;
+            dir = {std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
+        }
         if (auto hit = sim.physics().rayCast(eye, eye + dir * kDebugRayLength))
             set_.add(decals::bulletHole(hit->point, hit->normal, set_.ring().added()));
     }

@@ -252,6 +252,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"decals", "decal cap (bullet holes, scorch marks), oldest recycled (1 to 1024)", integer(&S::decals, "decals", 1, 1024)});
     I.add({"debug-decals", "debug: N bullet holes scattered round the start at load, for engine_ext/decals' cost (0 to 1024)",
            integer(&S::debugDecals, "debug-decals", 0, 1024)});
+    I.add({"debug-decals-cone", "debug: the debug-decals rays' half-angle about the start view, degrees (0 = all round, up to 90)",
+           num(&S::debugDecalsCone, "debug-decals-cone", 0, 90)});
     I.add({"mouse-sensitivity", "mouse sensitivity, 0.01 to 20 (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
     I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
     I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield (O cycles them)", [](S& s, W v, W where) {

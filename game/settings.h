@@ -47,6 +47,7 @@ struct Settings {
     int smokeResolution = 64;
     int decals = 256;            // decal cap, oldest recycled (Quake III 256, GoldSrc mp_decals 300); engine_ext/decals
     int debugDecals = 0;         // debug: this many bullet holes scattered round the start (the decal cost bench)
+    double debugDecalsCone = 0;  // debug: their rays' half-angle about the start view (degrees); 0: all round
     // Input
     double mouseSensitivity = 1.0;  // multiplies 0.022 deg per count (Quake's m_yaw)
     bool invertMouse = false;

@@ -42,7 +42,7 @@ public:
     std::string missingFeature(const frame::Gpu& gpu) const override;
     void configure(Ogre::CompositionTechnique&) const override;
     void bind(Ogre::uint32, Ogre::Pass&, frame::Uniforms&, const frame::FrameContext&) override {}
-    Output output() const override { return {"decals", "decalAlbedo"}; }
+    std::vector<Output> outputs() const override { return {{"decals", "decalAlbedo", 0}, {"decals", "decalNormal", 1}}; }
 
 private:
     Ogre::SceneManager& scene_;

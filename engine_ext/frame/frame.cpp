@@ -242,6 +242,7 @@ void Frame::publish() {
     published_["aoMap"] = noAo_;
     published_["volumeMap"] = noVolume_;
     published_["decalAlbedo"] = noDecals_;
+    published_["decalNormal"] = noDecals_;  // coverage 0: the G-buffer's normal as it is
     for (auto& e : chain_) {
         if (e->stage == Stage::GBuffer && !e->technique) {
             // One 4-target texture, or the split's two 2-target ones (frame.compositor).
@@ -257,8 +258,8 @@ void Frame::publish() {
         } else if (e->stage == Stage::Lighting && !e->technique) {
             published_["litMap"] = e->instance->getTextureInstance("lit", 0);
         } else if (e->technique) {
-            const Technique::Output out = e->technique->output();
-            if (!out.texture.empty()) published_[out.unit] = e->instance->getTextureInstance(out.texture, 0);
+            for (const Technique::Output& out : e->technique->outputs())
+                published_[out.unit] = e->instance->getTextureInstance(out.texture, out.mrt);
         }
     }
 }
@@ -321,6 +322,7 @@ void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
     if (passId == kLightingPass) {
         u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
         u.set("exposure", settings_.exposure);  // undoes the tone map for the sky
+        u.set("view", camera_.getViewMatrix(true));  // the G-buffer's view normals back to the world (decals' normals)
     } else if (passId == kOutputPass) {
         u.set("exposure", settings_.exposure);
         u.set("view", view_ == "ao" ? 1.0f : 0.0f);

@@ -73,11 +73,13 @@ public:
     virtual void setup(Ogre::uint32 /*passId*/, Ogre::Pass&) {}
     // Every frame before one of its passes renders (and once at setup, checking the names).
     virtual void bind(Ogre::uint32 passId, Ogre::Pass&, Uniforms&, const FrameContext&) = 0;
-    // Its texture that later passes read, and the texture-unit name they read it by.
+    // Its textures that later passes read, and the texture-unit names they read them by (`mrt`:
+    // which of a multiple-render-target texture's surfaces).
     struct Output {
         std::string texture, unit;
+        std::size_t mrt = 0;
     };
-    virtual Output output() const { return {}; }
+    virtual std::vector<Output> outputs() const { return {}; }
     // Debug views it can show instead of the picture (Frame::views), and the one to show now
     // ("" for none): a technique of the output stage then draws over the frame's output.
     virtual std::vector<std::string> views() const { return {}; }

@@ -58,7 +58,7 @@ public:
     std::string compositor() const override;
     std::string missingFeature(const frame::Gpu& gpu) const override;
     void bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u, const frame::FrameContext& ctx) override;
-    Output output() const override { return {"volume", "volumeMap"}; }
+    std::vector<Output> outputs() const override { return {{"volume", "volumeMap"}}; }
 
 private:
     // A volume to march: its texture, its world box, and the part of it holding smoke.

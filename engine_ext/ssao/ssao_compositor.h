@@ -53,7 +53,7 @@ public:
     void configure(Ogre::CompositionTechnique& t) const override;
     void setup(Ogre::uint32 passId, Ogre::Pass& pass) override;
     void bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u, const frame::FrameContext& ctx) override;
-    Output output() const override { return {"blurY", "aoMap"}; }
+    std::vector<Output> outputs() const override { return {{"blurY", "aoMap"}}; }
 
     // Ogre::MaterialManager::Listener: the height map's scheme for every material.
     Ogre::Technique* handleSchemeNotFound(unsigned short schemeIndex, const Ogre::String& schemeName,

@@ -8,7 +8,11 @@
 //     (the fringe, Wronski 2015); the same footprint sets the antialiasing width;
 //  4. the style: alpha test or smoothstep, an outline band, a glow, a drop shadow; multi-channel
 //     (median of RGB) or true distance (A).
-// Output: premultiplied albedo (gamma) and coverage, blended one / one-minus-source-alpha.
+//  5. a bullet hole bends the normal: a crater sloping in from the edge and a torn rim raised
+//     just outside it, a height profile of the distance field, its gradient from the field's own
+//     slope (two more look-ups one footprint apart).
+// Outputs (blended one / one-minus-source-alpha): premultiplied albedo (gamma) and coverage;
+// premultiplied bent world normal and its coverage (0 for every decal but a hole).
 #include "decals_shared.h"
 uniform sampler2D gbufferDepth;
 uniform sampler2D gbufferNormal;
@@ -21,6 +25,7 @@ uniform float atlasTiles;   // tiles side by side in decalAtlas: DECAL_TILES + t
 in vec3 vViewPos;
 flat in int vSlot;
 layout(location = 0) out vec4 fragColour;
+layout(location = 1) out vec4 fragNormal;
 
 float median3(vec3 v) { return max(min(v.r, v.g), min(max(v.r, v.g), v.b)); }
 bool has(float style, float bit) { return mod(floor(style / bit), 2.0) > 0.5; }
@@ -33,6 +38,37 @@ float distanceAt(vec2 uv, float tile, bool msdf, vec2 grad)
     vec4 t = textureGrad(decalAtlas, atlasUv, vec2(grad.x / atlasTiles, 0.0), vec2(0.0, grad.y));
     float v = msdf ? median3(t.rgb) : t.a;
     return (v - 0.5) * 2.0 * DECAL_RANGE;
+}
+
+// A bullet hole's surface height (in atlas texels) against the distance d (texels, > 0 inside):
+// a crater falling DECAL_HOLE_CRATER texels over the first 3 inside the edge, a torn rim raised
+// DECAL_HOLE_RIM texels 2 outside it (a Gaussian 0.8 texel wide: its outer slope ends before the
+// field's range, 4 texels, where the gradient vanishes). Returns dh/dd.
+float holeSlope(float d)
+{
+    float x = (d + 2.0) / 0.8;
+    float rim = DECAL_HOLE_RIM * -2.0 * x * exp(-x * x) / 0.8;
+    float t = clamp(d / 3.0, 0.0, 1.0);
+    float crater = -DECAL_HOLE_CRATER * 6.0 * t * (1.0 - t) / 3.0;
+    return rim + crater;
+}
+
+// The hole's bent world normal, premultiplied by its coverage: the field's gradient (forward
+// differences one footprint apart, at least a texel: the slope seen at this pixel's size) along
+// the box's axes, tilting the surface normal n by the profile's slope.
+vec4 holeNormal(vec3 n, vec3 axisX, vec3 axisY, vec2 uv, float tile, bool msdf, vec2 grad, float d, float footprint)
+{
+    if (d < -4.0) return vec4(0.0);
+    float step = max(footprint, 1.0);
+    vec2 du = vec2(step / float(DECAL_TILE), 0.0);
+    float gx = (distanceAt(uv + du, tile, msdf, grad) - d) / step;
+    float gy = (distanceAt(uv + du.yx, tile, msdf, grad) - d) / step;
+    // uv.x runs along the box's +x, uv.y against its +y (decal_box.frag: uv from box).
+    vec3 along = gx * normalize(axisX) - gy * normalize(axisY);
+    along -= n * dot(n, along);
+    vec3 bent = normalize(n - holeSlope(d) * along);
+    float cover = smoothstep(-4.0, -3.4, d);
+    return vec4(bent * cover, cover);
 }
 
 void main()
@@ -72,7 +108,9 @@ void main()
 
     vec3 colour;
     float alpha;
+    fragNormal = vec4(0.0);
     if (tile == float(DECAL_TILE_BULLET)) {
+        fragNormal = holeNormal(n, r0.xyz, r1.xyz, uv, tile, msdf, grad, d, footprint) * fade * info.z;
         // Torn paint at the rim, a black hole inside it (the outline band: 3 texels in).
         float core = smoothstep(3.0 - w, 3.0 + w, d);
         colour = mix(vec3(0.3, 0.28, 0.25), vec3(0.01), has(style, DECAL_STYLE_OUTLINE) ? core : 1.0);

@@ -34,6 +34,13 @@
 // Surfaces closer to parallel to the projection axis than this fade out (|n . axis| 0.2 .. 0.45).
 #define DECAL_FADE_LOW 0.2
 #define DECAL_FADE_HIGH 0.45
+// A bullet hole's relief (decal_box.frag, holeSlope), in atlas texels of height: the crater drops
+// 3 texels over the 3 inside the edge (walls at 45 degrees: a hole punched into plaster, its walls
+// catching the sun on one side and in shade on the other); the torn rim stands 0.8 texel (a lip
+// 2 texels outside the edge: its outer slope lights up on the sun's side, its inner slope, which
+// runs on into the crater, on the other).
+#define DECAL_HOLE_CRATER 3.0
+#define DECAL_HOLE_RIM 0.8
 #define DECAL_MAX_CAP 1024
 
 #endif

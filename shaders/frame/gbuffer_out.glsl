@@ -20,11 +20,13 @@ layout(location = 0) out vec4 outDepth;
 layout(location = 1) out vec4 outLight;
 #endif
 
-// albedo: gamma-encoded, as textures store it; directLight: linear irradiance, HDR.
-void writeGBuffer(vec3 albedo, vec3 directLight, vec3 worldPos, vec3 worldNormal)
+// albedo: gamma-encoded, as textures store it; directLight: linear irradiance, HDR; sunVisible:
+// the fraction of the sun its shadow lets through here (0 on faces turned from it), which the
+// lighting pass needs to relight a normal a decal bends.
+void writeGBuffer(vec3 albedo, vec3 directLight, float sunVisible, vec3 worldPos, vec3 worldNormal)
 {
     outAlbedo = vec4(albedo, 1.0);
     outNormal = vec4(normalize(mat3(view) * worldNormal) * 0.5 + 0.5, 0.5 + 0.5 * worldNormal.y);
     outDepth = vec4(-(view * vec4(worldPos, 1.0)).z, 0.0, 0.0, 1.0);
-    outLight = vec4(directLight, 1.0);
+    outLight = vec4(directLight, sunVisible);
 }

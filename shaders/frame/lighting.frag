@@ -2,16 +2,21 @@
 // The frame's lighting pass: the light each visible surface sends to the eye, linear and HDR, into
 // the float target `lit`:  albedo x (direct light + hemispheric ambient x AO).
 // The direct light (sun with its shadow, point lights) arrives as irradiance in the G-buffer; AO
-// darkens the ambient term only. Sky pixels (depth 0) keep their colour as shown: the tone map is
+// darkens the ambient term only. Decals change the albedo and may bend the normal first. Sky pixels (depth 0) keep their colour as shown: the tone map is
 // undone for them here, so the output pass shows them unchanged.
 #include "frame_shared.h"
 #include "upsample.glsl"
+#include "sun_wrap.glsl"
 uniform sampler2D gbufferAlbedo;
 uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferDepth;
 uniform sampler2D gbufferLight;
 uniform sampler2D aoMap;        // (AO, depth) at the AO's resolution (engine_ext/ssao), or 1x1 open
 uniform sampler2D decalAlbedo;  // premultiplied decal albedo (gamma) + coverage (engine_ext/decals), or 1x1 clear
+uniform sampler2D decalNormal;  // premultiplied world normal + coverage (engine_ext/decals), or 1x1 clear
+uniform mat4 view;              // world -> view of the camera that drew the G-buffer
+uniform vec3 sunDirection;      // world, unit, towards the sun (ObscuraLighting)
+uniform vec3 sunColour;         // linear RGB (ObscuraLighting)
 uniform float aoPresent;        // 0: no AO stage runs, AO is 1 everywhere
 uniform vec3 skyAmbient;        // linear RGB, light arriving from above (ObscuraLighting)
 uniform vec3 groundAmbient;     // linear RGB, light bounced from below
@@ -38,7 +43,22 @@ void main()
     vec3 gammaAlbedo = texelFetch(gbufferAlbedo, pixel, 0).rgb * (1.0 - decal.a) + decal.rgb;
     albedo = pow(gammaAlbedo, vec3(2.2));
     float ao = aoPresent > 0.5 ? upsampledAo(aoMap, vUv, depth) : 1.0;
-    vec3 ambient = mix(groundAmbient, skyAmbient, texelFetch(gbufferNormal, pixel, 0).a);
-    vec3 direct = texelFetch(gbufferLight, pixel, 0).rgb;
+    float skyward = texelFetch(gbufferNormal, pixel, 0).a;
+    vec4 light = texelFetch(gbufferLight, pixel, 0);
+    vec3 direct = light.rgb;
+    // A decal's bent normal (a bullet hole's crater and rim): the sun's share relit with it (its
+    // shadow as the G-buffer pass found it), the sky's share of the ambient turned with it. Point
+    // lights keep the surface's own normal (the G-buffer holds only their sum). Pixels no decal
+    // bends keep the G-buffer's light to the bit.
+    vec4 bent = texelFetch(decalNormal, min(pixel, textureSize(decalNormal, 0) - 1), 0);
+    if (bent.a > 0.0) {
+        vec3 nView = texelFetch(gbufferNormal, pixel, 0).xyz * 2.0 - 1.0;
+        vec3 n = normalize(transpose(mat3(view)) * nView);
+        vec3 nBent = normalize(n * (1.0 - bent.a) + bent.rgb);
+        direct += sunColour * (light.a * (sunWrap(dot(nBent, sunDirection)) - sunWrap(dot(n, sunDirection))));
+        direct = max(direct, vec3(0.0));
+        skyward = 0.5 + 0.5 * nBent.y;
+    }
+    vec3 ambient = mix(groundAmbient, skyAmbient, skyward);
     fragColour = vec4(albedo * (direct + ambient * ao), 1.0);
 }

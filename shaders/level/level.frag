@@ -22,6 +22,7 @@ in vec2 vUv;
 in vec4 vShadowPos;
 
 #include "gbuffer_out.glsl"
+#include "sun_wrap.glsl"
 // Materials without an albedo texture (the GBuffer scheme's shared fallback) count as light grey.
 uniform float hasAlbedo;
 
@@ -51,10 +52,10 @@ void main()
 
     vec3 light = vec3(0.0);
     float ndotl = dot(n, sunDirection);
-    // Wrap lighting (0.2): keeps sunlit back faces from collapsing to the ambient floor.
-    float sun = max((ndotl + 0.2) / 1.2, 0.0);
-    if (sun > 0.0 && dot(sunColour, sunColour) > 0.0) sun *= sunVisibility(max(ndotl, 0.0));
-    light += sunColour * sun;
+    float sun = sunWrap(ndotl);
+    float visible = sun > 0.0 ? 1.0 : 0.0;
+    if (sun > 0.0 && dot(sunColour, sunColour) > 0.0) visible = sunVisibility(max(ndotl, 0.0));
+    light += sunColour * (sun * visible);
 
     int count = int(lightCount);
     for (int i = 0; i < 8; ++i) {
@@ -68,5 +69,5 @@ void main()
         light += lightColours[i].rgb * (falloff * falloff * ndotp);
     }
 
-    writeGBuffer(albedo, light, vWorldPos, n);
+    writeGBuffer(albedo, light, visible, vWorldPos, n);
 }

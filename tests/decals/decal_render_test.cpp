@@ -1,6 +1,7 @@
 // The decals in the game, headless: looking down at the arena's floor, one shot, a look up and a
 // second shot, back down; the capture after against the one before: the holes are darker pixels,
 // nothing gets lighter; with the cap at 1 the first hole is recycled and only the second is left.
+// A hole in a sunlit wall bends the normal: its rim lights up on the sun's side.
 #include <gtest/gtest.h>
 
 #include "core/image.h"
@@ -8,6 +9,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -75,6 +78,70 @@ TEST(DecalRender, HolesWhereTheRifleHitsAndTheCapRecycles) {
     EXPECT_GT(one.darker, 40);                    // the second hole is there
     EXPECT_GT(full.darker, one.darker + 30);      // both holes with room for 256
     EXPECT_LT(full.lighter + one.lighter, 10);    // decals only darken: nothing else moved
+    fs::remove_all(dir);
+}
+
+// 0.4 m from the courtyard's south wall (its face looks north, towards the sun, 55 degrees up), fov
+// 40: one shot at eye height. The hole is darker than the wall was. Its relief (the bent normal):
+// the torn rim catches more light than the flat wall did (a decal that only changed the albedo could
+// make nothing lighter), and inside the edge the crater's lower wall, which faces up towards the
+// sun, is brighter than its upper wall, which faces down (the same grey paint all round: without
+// the relief the two halves match).
+TEST(DecalRender, AHoleInASunlitWallIsLitByItsBentNormal) {
+    const fs::path dir = fs::temp_directory_path() / ("obscura_decal_relief_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "relief.replay") << R"(obscura-replay 1
+level media/levels/arena.map
+seed 1
+resolution 640 360
+start 34 1.65 -20.4 180 0
+0 set fov 40
+3 capture before
+5 button left down
+6 button left up
+12 capture after
+13 end
+)";
+    const std::string cmd = "cd " + std::string(OBSCURA_SOURCE_DIR) + " && XDG_CACHE_HOME=" + (dir / "cache").string() + " " +
+                            OBSCURA_GAME + " --replay " + (dir / "relief.replay").string() + " --capture-dir " + dir.string();
+    const auto r = testing_support::runProcess(cmd);
+    ASSERT_EQ(r.code, 0) << r.out;
+    const Image before = readPng((dir / "before.png").string()), after = readPng((dir / "after.png").string());
+    auto sum = [](const Image& im, int x, int y) {
+        const std::size_t i = (static_cast<std::size_t>(y) * 640 + x) * 4;
+        return im.rgba[i] + im.rgba[i + 1] + im.rgba[i + 2];
+    };
+    int darker = 0, lighter = 0;
+    double rowSum = 0;
+    for (int y = 50; y < 300; ++y)
+        for (int x = 0; x < 640; ++x) {
+            const int d = sum(after, x, y) - sum(before, x, y);
+            if (d < -3 * 40) ++darker, rowSum += y;
+            if (d > 3 * 12) ++lighter;
+        }
+    ASSERT_GT(darker, 2000);  // the hole: ~70 px across at 0.4 m and fov 40
+    const double middle = rowSum / darker;
+    // The crater's paint: grey where the wall was red brick, not the black core, above and below
+    // the middle.
+    double upper = 0, lower = 0;
+    int nUpper = 0, nLower = 0;
+    for (int y = 50; y < 300; ++y)
+        for (int x = 0; x < 640; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(y) * 640 + x) * 4;
+            const int r = after.rgba[i], g = after.rgba[i + 1], b = after.rgba[i + 2];
+            const int br = before.rgba[i], bg = before.rgba[i + 1], bb = before.rgba[i + 2];
+            const bool wasBrick = std::max({br, bg, bb}) - std::min({br, bg, bb}) > 40;
+            if (!wasBrick || std::max({r, g, b}) - std::min({r, g, b}) > 25 || r + g + b < 3 * 25) continue;
+            (y < middle ? upper : lower) += r + g + b;
+            ++(y < middle ? nUpper : nLower);
+        }
+    upper /= std::max(nUpper, 1);
+    lower /= std::max(nLower, 1);
+    std::printf("[decals] relief: %d darker pixels, %d lighter; crater paint: upper half %.1f (%d px), lower %.1f (%d px)\n",
+                darker, lighter, upper / 3, nUpper, lower / 3, nLower);
+    EXPECT_GT(lighter, 200);            // the rim
+    ASSERT_GT(std::min(nUpper, nLower), 200);
+    EXPECT_GT(lower, upper * 1.15);     // the sunward wall of the crater at least 15 % brighter
     fs::remove_all(dir);
 }
 
