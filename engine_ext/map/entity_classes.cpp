@@ -55,6 +55,8 @@ std::vector<KeyGroup> makeGroups() {
 std::vector<EntityClass> makeClasses() {
     const std::vector<KeyChoice> doorSounds = {{"0", "None"}, {"1", "Stone"}, {"2", "Machine"}, {"3", "Stone chain"}, {"4", "Screechy metal"}};
     std::vector<EntityClass> c;
+    // Editor boxes of the game's props and boards: their default size at Quake's 32 units a metre
+    // (a 0.75 m crate is 24 units); the Quake classes keep Quake's boxes.
     // Read by map_compile.cpp (units_per_metre) and render/level_lighting.cpp (the sun and sky dome).
     c.push_back({"worldspawn", EntityKind::Brush, R::World, BrushRole::Solid, "The level: its static brushes and level-wide settings",
                  {},
