@@ -21,7 +21,7 @@ struct LoadTimes {
 // A level with thousands of bad brushes must not bury the terminal: 20 lines show the pattern,
 // the rest is counted (and every warning still goes to the log).
 constexpr std::size_t kMaxWarningLines = 20;
-// Unknown classes named on the summary line before the rest is counted (e3m4 has 29).
+// Unknown classes named on the summary line before the rest is counted (e3m4 has 35: all shown).
 constexpr std::size_t kMaxUnknownNames = 40;
 
 // The warnings as they are (each already `file:line: text`), at most maxLines of them, then
