@@ -6,6 +6,7 @@
 #include "mesh/ogre_mesh_reader.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -53,10 +54,18 @@ Vec3 parseVec3(const std::string& text) {
     return p;
 }
 
-map::Level Session::loadLevel(const Settings& settings, std::vector<std::string>* warnings) {
+map::Level Session::loadLevel(const Settings& settings, std::vector<std::string>* warnings, map::LoadTimes* times) {
     map::CompileOptions options;
     options.unitsPerMetre = settings.mapScale;
-    return map::loadLevel(settings.level, options, warnings);
+    const auto t0 = std::chrono::steady_clock::now();
+    const map::MapFile file = map::loadMapFile(settings.level);
+    const auto t1 = std::chrono::steady_clock::now();
+    map::Level level = map::compileLevel(file, options, warnings);
+    if (times) {
+        times->parseMs = std::chrono::duration<double, std::milli>(t1 - t0).count();
+        times->compileMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
+    }
+    return level;
 }
 
 std::vector<std::string> Session::modelSearchDirs(const Settings& settings) {

@@ -9,6 +9,7 @@
 #include "game_decals.h"
 #include "game_smoke.h"
 #include "map/level.h"
+#include "map/load_report.h"
 #include "settings.h"
 #include "sim/player_controller.h"
 #include "sim/simulation.h"
@@ -22,8 +23,9 @@ namespace obscura {
 
 class Session {
 public:
-    // Reads and compiles settings.level (throws map/IO errors naming the file).
-    static map::Level loadLevel(const Settings& settings, std::vector<std::string>* warnings);
+    // Reads and compiles settings.level (throws map/IO errors naming the file); `times`, when
+    // given, gets the parse and compile milliseconds.
+    static map::Level loadLevel(const Settings& settings, std::vector<std::string>* warnings, map::LoadTimes* times = nullptr);
     // The folders a relative misc_model path is looked for in: the .map file's, the data folder,
     // the working directory (the renderer places the visible model from the same list).
     static std::vector<std::string> modelSearchDirs(const Settings& settings);

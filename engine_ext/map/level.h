@@ -109,7 +109,9 @@ struct Level {
     double playerStartYaw = 0;
     bool hasPlayerStart = false;
     Aabb bounds;                                 // of all brushes
-    std::vector<std::string> unknownClassnames;  // each listed once
+    // Classes not in entity_classes.h, each listed once in file order, with how many entities had it.
+    std::vector<std::string> unknownClassnames;
+    std::vector<int> unknownClassCounts;  // parallel to unknownClassnames
 };
 
 }  // namespace obscura::map

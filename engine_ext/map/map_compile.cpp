@@ -2,6 +2,7 @@
 #include "map/map_compile.h"
 
 #include "map/brush_geometry.h"
+#include "map/entity_classes.h"
 #include "map/input_file.h"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <set>
 
 namespace obscura::map {
 
@@ -19,6 +19,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDefaultUnitsPerMetre = 32.0;
 // info_player_start's origin is the player's centre, 24 units above the feet (Quake's hull).
 constexpr double kPlayerOriginAboveFeet = 24.0;
+constexpr int kNoStart = 99;  // startPriority of a class that is no player start
 
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -86,21 +87,22 @@ std::string describeOutside(const Aabb& box, const Vec3& p) {
            " to " + v(box.max);
 }
 
-enum class BrushClass { Solid, NonSolid, Trigger };
-
-BrushClass classify(const std::string& classname) {
-    if (startsWith(classname, "trigger_")) return BrushClass::Trigger;
-    if (classname == "func_illusionary" || classname == "func_detail_illusionary") return BrushClass::NonSolid;
-    return BrushClass::Solid;
+// What an entity's brushes become: the registry's answer for a known class. An unknown brush
+// entity (a mod's func_ or trigger_ class) keeps Quake's convention so a foreign map still plays:
+// trigger_* stays an invisible volume, anything else is solid world.
+BrushRole brushRole(const EntityClass* known, const std::string& classname) {
+    if (known) return known->brushes;
+    return startsWith(classname, "trigger_") ? BrushRole::Volume : BrushRole::Solid;
 }
 
-bool isKnownClass(const std::string& c) {
-    static const char* prefixes[] = {"func_", "trigger_", "info_player_", "light", "target_", "prop_"};
-    for (const char* p : prefixes)
-        if (startsWith(c, p)) return true;
-    static const std::set<std::string> exact = {"worldspawn", "misc_model", "info_sign", "decal_sign", "smoke_volume", "path_corner",
-                                                "info_null", "info_notnull", "info_teleport_destination"};
-    return exact.count(c) != 0;
+// Spawn preference (lower wins; the first of equals wins), as Quake 2's SelectSpawnPoint for a
+// fresh start: an unnamed info_player_start, else a named one (a level-transition start), else
+// deathmatch, else coop.
+int startPriority(const std::string& classname, const MapEntity& e) {
+    if (classname == "info_player_start") return e.value("targetname").empty() ? 0 : 1;
+    if (classname == "info_player_deathmatch") return 2;
+    if (classname == "info_player_coop") return 3;
+    return kNoStart;
 }
 }  // namespace
 
@@ -168,23 +170,35 @@ public:
         e.yaw = angleDeg * kPi / 180.0 - kPi / 2.0;
 
         const std::string& c = e.classname;
+        const EntityClass* known = findEntityClass(c);
         if (c.empty()) warnAt(me.pos, "entity without a classname");
-        else if (!isKnownClass(c) && unknown_.insert(c).second) level_.unknownClassnames.push_back(c);
+        else if (!known) countUnknown(c);
 
-        const int priority = c == "info_player_start" ? 0 : c == "info_player_deathmatch" ? 1 : c == "info_player_coop" ? 2 : 99;
+        const int priority = startPriority(c, me);
         if (priority < startPriority_ && e.hasOrigin) {
             startPriority_ = priority;
             level_.hasPlayerStart = true;
             level_.playerStart = toWorld(quakeOrigin - Vec3{0, 0, kPlayerOriginAboveFeet}) * inv_;
             level_.playerStartYaw = e.yaw;
         }
-        if (startsWith(c, "light") && e.hasOrigin) addLight(me, e);
-        if (c == "misc_model") addModel(me, e, static_cast<int>(index));
-        for (const MapBrush& mb : me.brushes) addBrush(mb, classify(c), static_cast<int>(index));
+        if (known && known->role == EntityRole::Light && e.hasOrigin) addLight(me, e);
+        if (known && known->role == EntityRole::Model) addModel(me, e, static_cast<int>(index));
+        for (const MapBrush& mb : me.brushes) addBrush(mb, brushRole(known, c), static_cast<int>(index));
         level_.entities.push_back(std::move(e));
     }
 
 private:
+    void countUnknown(const std::string& c) {
+        auto& names = level_.unknownClassnames;
+        const auto at = std::find(names.begin(), names.end(), c);
+        if (at != names.end()) {
+            ++level_.unknownClassCounts[static_cast<std::size_t>(at - names.begin())];
+            return;
+        }
+        names.push_back(c);
+        level_.unknownClassCounts.push_back(1);
+    }
+
     [[noreturn]] void failAt(const SourcePos& at, const std::string& problem) const {
         throw MapError(map_.path + ":" + std::to_string(at.line) + ": " + problem);
     }
@@ -239,7 +253,7 @@ private:
         return size;
     }
 
-    void addBrush(const MapBrush& mb, BrushClass bc, int entityIndex) {
+    void addBrush(const MapBrush& mb, BrushRole role, int entityIndex) {
         BrushResult br = buildBrush(mb);
         if (!br.error.empty()) {
             warnAt(mb.pos, "brush skipped: " + br.error);
@@ -248,14 +262,14 @@ private:
         LevelBrush b;
         b.entityIndex = entityIndex;
         b.pos = mb.pos;
-        b.solid = bc == BrushClass::Solid;
+        b.solid = role == BrushRole::Solid;
         b.visible = false;
         for (const BrushPolygon& bp : br.polygons) {
             const MapFace& face = mb.faces[static_cast<std::size_t>(bp.faceIndex)];
             LevelPolygon poly;
             poly.texture = face.texture;
             poly.normal = toWorld(bp.normal);
-            poly.visible = bc != BrushClass::Trigger && !isInvisibleTexture(face.texture);
+            poly.visible = role != BrushRole::Volume && !isInvisibleTexture(face.texture);
             if (isLiquidTexture(face.texture)) b.solid = false;
             const auto [tw, th] = textureSize(face.texture);
             for (std::size_t k = 0; k < bp.points.size(); ++k) {
@@ -288,8 +302,7 @@ private:
     Level& level_;
     std::vector<std::string>* warnings_;
     double inv_;
-    std::set<std::string> unknown_;
-    int startPriority_ = 99;  // info_player_start (0) beats deathmatch (1) beats coop (2)
+    int startPriority_ = kNoStart;
 };
 }  // namespace
 

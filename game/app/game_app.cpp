@@ -23,6 +23,7 @@
 #include <SDL2/SDL.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -150,21 +151,24 @@ void GameApp::shutdown() {
 
 void GameApp::load() {
     std::vector<std::string> warnings;
-    map::Level level = Session::loadLevel(settings_, &warnings);
+    map::LoadTimes times;
+    map::Level level = Session::loadLevel(settings_, &warnings, &times);
     checkInLevel(settings_, level);  // the start pose and smoke position inside the level's box
+    // Every warning to the log; the first kMaxWarningLines on stderr, as file:line: text.
     for (const auto& w : warnings) Ogre::LogManager::getSingleton().logWarning(w);
-    if (!warnings.empty())
-        std::cerr << "obscura: " << warnings.size() << " warnings loading " << settings_.level << " (see the log)\n";
-    if (!level.unknownClassnames.empty()) {
-        std::string list;
-        for (const auto& c : level.unknownClassnames) list += (list.empty() ? "" : ", ") + c;
-        Ogre::LogManager::getSingleton().logMessage("level: unknown entity classes (ignored): " + list);
-    }
+    for (const auto& line : map::warningLines(warnings)) std::cerr << line << "\n";
     const Vec3 towardSun = render::computeLevelLighting(level).sunDirection;
+    const auto t0 = std::chrono::steady_clock::now();
     session_ = std::make_unique<Session>(settings_, std::move(level), towardSun);
+    const auto t1 = std::chrono::steady_clock::now();
 
     view_ = std::make_unique<RenderView>(RenderView::Context{*mRoot, *getRenderWindow(), *mOverlaySystem, *mShaderGenerator},
                                          settings_, *session_);
+    times.sessionMs = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    times.sceneMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
+    const std::string summary = map::summaryLine(session_->level(), warnings.size(), times);
+    Ogre::LogManager::getSingleton().logMessage(summary);
+    std::cerr << summary << "\n";
     // Sounds load once, here (a malformed WAV stops the game at load time, naming the file); with
     // no audio device the game runs silent after one warning line.
     audio_ = std::make_unique<GameAudio>(settings_, dataPath("media/sounds"), session_->smoke().manager().settings().emitTime);

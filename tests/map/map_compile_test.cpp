@@ -226,7 +226,7 @@ TEST(MapCompile, PointEntityKeys) {
         entity("\"classname\" \"info_player_coop\"\n\"origin\" \"0 0 100\"") +
         entity("\"classname\" \"info_player_start\"\n\"origin\" \"10 -20 30.5\"\n\"angle\" \"-1\"") +
         entity("\"classname\" \"info_player_start\"\n\"origin\" \"999 0 0\"") +  // only the first counts
-        entity("\"classname\" \"light_torch_small\"\n\"origin\" \"0 0 0\"\n\"_light\" \"200\"\n\"color\" \"1 0.5 0.25\"") +
+        entity("\"classname\" \"light_torch_small_walltorch\"\n\"origin\" \"0 0 0\"\n\"_light\" \"200\"\n\"color\" \"1 0.5 0.25\"") +
         entity("\"classname\" \"light\"\n\"origin\" \"0 0 0\"") +
         entity("\"classname\" \"misc_model\"\n\"origin\" \"0 0 0\"\n\"model\" \"a.mesh\"\n\"modelscale\" \"0.5\"\n"
                "\"angles\" \"10 180 5\"") +
