@@ -10,7 +10,8 @@
 //   FRAME_GBUFFER_NORMAL  A8B8G8R8   view-space normal packed to 0..1; a = how much of the sky
 //                                    hemisphere the normal faces (0.5 + 0.5 world n.y)
 //   FRAME_GBUFFER_DEPTH   FLOAT32_R  linear view depth in metres, 0 = nothing drawn (sky)
-//   FRAME_GBUFFER_LIGHT   FLOAT16_RGBA direct irradiance (sun with its shadow, point lights), HDR
+//   FRAME_GBUFFER_LIGHT   FLOAT16_RGBA direct irradiance (sun with its shadow, point lights), HDR;
+//                                    a = the sun's visibility here (its shadow; 0 facing away)
 // 20 bytes a pixel. Light is irradiance, not radiance: the lighting pass multiplies it by the
 // albedo, so a decal that changes the albedo changes what the light makes of it.
 #define FRAME_GBUFFER_ALBEDO 0
