@@ -82,10 +82,11 @@ struct Msdf {
     Field r, g, b;
 };
 Msdf multiChannel(const Shape& shape, int size);
-// Clash correction (a simple form of Chlumský's): where the median of the three channels is more
-// than `tolerance` texels from the true distance `sdf` at a texel or at any of its 4 neighbours
-// (a false edge would appear between them), the texel falls back to the true distance in all three.
-// Returns the number of texels changed.
+// Clash correction (after Chlumský's): where the median of the three channels is more than
+// `tolerance` texels from the true distance `sdf` at a texel or at any of its 4 neighbours, or where
+// bilinear filtering between two texels of a 2x2 cell would put a false edge (the median of the
+// blended channels across the edge from the blended true distance, by more than `tolerance`), the
+// texels fall back to the true distance in all three channels. Returns the number changed.
 int correctClashes(Msdf& m, const Field& sdf, double tolerance = 1.0);
 // 8-bit encoding: 0.5 + d / (2 range), clamped (range in texels: the spread).
 std::uint8_t encode(double distance, double range);
