@@ -65,7 +65,8 @@ private:
     Ogre::MaterialPtr heightMaterial_;
     Ogre::Matrix4 heightViewProj_ = Ogre::Matrix4::IDENTITY;
     int heightMapVersion_ = 0;  // a new map re-binds the heightfield pass
-    std::vector<float> hemisphereKernel_, sphereKernel_;  // SSAO_MAX_SAMPLES x vec3 each
+    // [n - 1]: the kernel relaxed for n samples, SSAO_MAX_SAMPLES x vec3 (zero-padded).
+    std::vector<std::vector<float>> hemisphereKernels_, sphereKernels_;
     std::string mode_ = "off";
     AoKnobs knobs_;
 };

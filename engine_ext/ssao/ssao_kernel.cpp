@@ -79,6 +79,12 @@ std::vector<Vec3> makeKernel(int count, KernelShape shape, std::uint64_t seed) {
     return randomiseRadii(relaxDirections(randomDirections(count, shape, seed), shape), seed);
 }
 
+std::vector<Vec3> kernelFor(int samples, int slots, KernelShape shape, std::uint64_t seed) {
+    std::vector<Vec3> k = makeKernel(samples, shape, seed);
+    k.resize(static_cast<std::size_t>(std::max(slots, samples)), Vec3{0, 0, 0});
+    return k;
+}
+
 double minPairwiseDistance(const std::vector<Vec3>& dirs) {
     double best = 1e300;
     for (std::size_t i = 0; i < dirs.size(); ++i)

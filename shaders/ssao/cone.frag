@@ -18,7 +18,9 @@ void main()
     for (int i = 0; i < SSAO_MAX_SAMPLES; ++i) {
         if (i >= count) break;
         vec3 q = p.xyz + reflect(kernel[i], rnd) * radius;
-        vec4 s = viewPosition(projectToUv(q));
+        vec2 uv = projectToUv(q);
+        if (!onScreen(uv)) continue;  // off the screen: unknown, not an occluder
+        vec4 s = viewPosition(uv);
         if (s.w < 0.5) continue;
         vec3 v = s.xyz - p.xyz;
         float dist = length(v);

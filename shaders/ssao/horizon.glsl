@@ -23,7 +23,7 @@ float horizonOcclusion(vec4 p, vec3 n, vec3 rnd)
         for (int s = 0; s < 8; ++s) {
             if (s >= steps) break;
             vec2 uv = vUv + dir * radiusUv * ((float(s) + jitter) / float(steps));
-            if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) break;
+            if (!onScreen(uv)) break;
             vec4 q = viewPosition(uv);
             if (q.w < 0.5) continue;
             vec3 h = q.xyz - p.xyz;

@@ -17,6 +17,11 @@ vec2 projectToUv(vec3 p)
     return uv;
 }
 
+// Whether uv lies on the screen. Every mode tests this before it reads a sample's surface: what lies
+// past the border is unknown, and a depth read clamped to the edge texel but placed at the
+// unclamped uv is a surface that is not there (cone darkened the whole border that way).
+bool onScreen(vec2 uv) { return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))); }
+
 // The G-buffer texel under uv. texelFetch: a plain load, no filtering (several times cheaper than
 // texture() on llvmpipe, and the depth must not be filtered anyway).
 ivec2 gbufferTexel(vec2 uv)
@@ -65,7 +70,7 @@ vec3 pixelNoise()
 float occluderAt(vec3 q, float centreZ)
 {
     vec2 uv = projectToUv(q);
-    if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0) return 0.0;
+    if (!onScreen(uv)) return 0.0;
     float depth = depthAt(uv);
     if (depth <= 0.0) return 0.0;  // sky
     float sz = -depth;

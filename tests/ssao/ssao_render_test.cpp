@@ -7,6 +7,7 @@
 #include "run_process.h"
 #include "ssao/ssao_modes.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -76,6 +77,31 @@ TEST(SsaoRender, AoOnlyViewShowsTheCreasesNotAFlatImage) {
         const std::size_t n = ao.rgba.size() / 4;
         EXPECT_GT(white, n / 2) << mode << ": open floor and walls are unoccluded";
         EXPECT_GT(dark, n / 200) << mode << ": the foot of the low wall and the pillars are occluded";
+    }
+}
+
+// Looking down (60 degrees) at the open courtyard floor: nothing occludes it anywhere, so no mode may
+// make the screen's border darker than its middle (samples that project past the border are
+// unknown, not occluders: cone used to rebuild them at the unclamped uv and darken the border).
+TEST(SsaoRender, NoModeDarkensTheScreenBorder) {
+    const char* const down = "--start-pose '32 1.65 -21 0 -60'";
+    for (const auto& mode : obscura::ssao::modeNames()) {
+        if (mode == "off") continue;
+        const obscura::Image ao = render(mode + "_down", "--ssao " + mode + " --ao-only", down);
+        double border = 0, middle = 0;
+        int nBorder = 0, nMiddle = 0;
+        for (int y = 0; y < 180; ++y)
+            for (int x = 0; x < 320; ++x) {
+                const bool edge = x < 6 || x >= 314 || y < 6 || y >= 174;
+                const bool centre = x >= 80 && x < 240 && y >= 45 && y < 135;
+                const int l = luma(ao, static_cast<std::size_t>(y) * 320 + x);
+                if (edge) border += l, ++nBorder;
+                if (centre) middle += l, ++nMiddle;
+            }
+        border /= nBorder;
+        middle /= nMiddle;
+        std::printf("[ssao] %s looking down: border %.1f, middle %.1f\n", mode.c_str(), border, middle);
+        EXPECT_GE(border, middle - 3.0) << mode << ": the border is darker than the open floor's middle";
     }
 }
 
