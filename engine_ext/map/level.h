@@ -44,6 +44,12 @@ struct LevelPolygon {
     Vec3 normal;                        // outward
     std::string texture;                // the face's texture name as written in the map
     bool visible = true;                // false for skip / hint / caulk / nodraw / clip / trigger faces
+    // map/surface_rules.h: drawn as the sky (Quake's sky* names, Quake 2's SURF_SKY): no shadow, no AO.
+    bool sky = false;
+    bool fence = false;  // a `{` texture: alpha-tested (holes where alpha < 0.5), still solid
+    // Quake 2's `contents flags value` as the face wrote them (0 when it wrote none).
+    std::uint32_t contents = 0, surfaceFlags = 0;
+    int surfaceValue = 0;
 };
 
 struct LevelBrush {

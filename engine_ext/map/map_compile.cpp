@@ -4,6 +4,7 @@
 #include "map/brush_geometry.h"
 #include "map/entity_classes.h"
 #include "map/input_file.h"
+#include "map/surface_rules.h"
 
 #include <algorithm>
 #include <cctype>
@@ -270,6 +271,11 @@ private:
             poly.texture = face.texture;
             poly.normal = toWorld(bp.normal);
             poly.visible = role != BrushRole::Volume && !isInvisibleTexture(face.texture);
+            poly.contents = face.contents;
+            poly.surfaceFlags = face.surfaceFlags;
+            poly.surfaceValue = face.value;
+            poly.sky = isSkyFace(face.texture, face.surfaceFlags);
+            poly.fence = isFenceTexture(face.texture);
             if (isLiquidTexture(face.texture)) b.solid = false;
             const auto [tw, th] = textureSize(face.texture);
             for (std::size_t k = 0; k < bp.points.size(); ++k) {

@@ -3,6 +3,7 @@
 
 #include "map/input_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -178,8 +179,23 @@ MapFace face(Lexer& lx) {
     f.rotation = lx.number("rotation");
     f.uScale = lx.number("x scale");
     f.vScale = lx.number("y scale");
-    // Quake 2/3 maps add content flags, surface flags and value on the same line: accept them.
-    while (lx.peek() != '(' && lx.peek() != '}' && lx.peek() != '\0') lx.number("surface flags");
+    // Quake 2/3 maps add content flags, surface flags and value: kept when all three are there.
+    // Flags are bit sets written as integers (a negative one is its 32-bit pattern, as qbsp's atoi
+    // reads it); anything after the third number is accepted and ignored, as before.
+    double extra[3];
+    int count = 0;
+    while (lx.peek() != '(' && lx.peek() != '}' && lx.peek() != '\0') {
+        const double v = lx.number(count == 0 ? "content flags" : count == 1 ? "surface flags" : "surface value");
+        if (count < 3) extra[count] = v;
+        ++count;
+    }
+    if (count >= 3) {
+        auto bits = [](double v) { return static_cast<std::uint32_t>(static_cast<std::int64_t>(std::trunc(std::clamp(v, -2147483648.0, 4294967295.0)))); };
+        f.hasFlags = true;
+        f.contents = bits(extra[0]);
+        f.surfaceFlags = bits(extra[1]);
+        f.value = static_cast<int>(std::clamp(std::trunc(extra[2]), -2147483648.0, 2147483647.0));
+    }
     return f;
 }
 

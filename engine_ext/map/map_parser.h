@@ -3,6 +3,7 @@
 //   ( x y z ) ( x y z ) ( x y z ) TEXTURE xoff yoff rot xscale yscale
 // or Valve-220 (worldspawn "mapversion" "220")
 //   ( x y z ) ( x y z ) ( x y z ) TEXTURE [ ux uy uz uoff ] [ vx vy vz voff ] rot xscale yscale
+// either optionally followed by Quake 2's `contents surfaceflags value` (kept in MapFace).
 // `//` comments anywhere. Quake 3 `patchDef2`/`brushDef*` blocks are skipped with a warning.
 // Reference: the Quake map format as documented by the Quake Wiki and TrenchBroom's manual.
 #pragma once
@@ -10,6 +11,7 @@
 #include "map/level.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -41,6 +43,11 @@ struct MapFace {
     bool valve220 = false;
     Vec3 uAxis, vAxis;  // Valve-220 only
     double uOffset = 0, vOffset = 0, rotation = 0, uScale = 1, vScale = 1;
+    // Quake 2 / Quake 3 / ericw faces end with `contents flags value` (qfiles.h's CONTENTS_*,
+    // SURF_*; value is e.g. a light's brightness); hasFlags says whether this face wrote them.
+    bool hasFlags = false;
+    std::uint32_t contents = 0, surfaceFlags = 0;
+    int value = 0;
     SourcePos pos;
 };
 

@@ -22,11 +22,6 @@ struct ChunkKey {
     bool operator<(const ChunkKey& o) const { return std::tie(x, y, z, sky) < std::tie(o.x, o.y, o.z, o.sky); }
 };
 
-bool isSky(const std::string& texture) {
-    return texture.size() >= 3 && (texture[0] == 's' || texture[0] == 'S') && (texture[1] == 'k' || texture[1] == 'K') &&
-           (texture[2] == 'y' || texture[2] == 'Y');
-}
-
 
 // A Quake `light` of 300 (the default) is a bright bulb; this maps it to a diffuse colour of
 // about 1.5 at the light, which with the squared falloff in level.frag reads like Quake's lighting.
@@ -59,8 +54,8 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
             for (const auto& v : poly.vertices) c += v.position;
             c = c / static_cast<double>(poly.vertices.size());
             const ChunkKey key{static_cast<long>(std::floor(c.x / chunkSize)), static_cast<long>(std::floor(c.y / chunkSize)),
-                               static_cast<long>(std::floor(c.z / chunkSize)), isSky(poly.texture)};
-            chunks[key][materials.resolve(poly.texture)].push_back(&poly);
+                               static_cast<long>(std::floor(c.z / chunkSize)), poly.sky};
+            chunks[key][materials.resolve(poly.texture, poly.sky)].push_back(&poly);
         }
     }
 

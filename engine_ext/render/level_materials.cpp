@@ -1,6 +1,7 @@
 // See level_materials.h.
 #include "render/level_materials.h"
 
+#include "map/surface_rules.h"
 #include "texgen/texgen.h"
 
 #include <OgreImage.h>
@@ -20,6 +21,9 @@ namespace {
 // Generated fallback textures: 128 px is enough for a 64-texel Quake texture seen up close and
 // costs 64 KiB each; e3m4 has about 150 distinct names.
 constexpr int kFallbackTextureSize = 128;
+// Fence texels below half alpha are holes (Quake's fences are 1-bit masks; 0.5 keeps a mipmapped
+// grille's bars, 61 % coverage, texgen.cpp).
+constexpr float kFenceAlphaCutoff = 0.5f;
 
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -36,7 +40,9 @@ LevelMaterials::~LevelMaterials() {
     for (auto& t : generatedTextures_) tm.remove(t);
 }
 
-const std::string& LevelMaterials::resolve(const std::string& texture) {
+const std::string& LevelMaterials::resolve(const std::string& texture, bool sky) {
+    static const std::string kSky = "level/sky";
+    if (sky) return kSky;
     const std::string key = lower(texture);
     auto it = cache_.find(key);
     if (it != cache_.end()) return it->second;
@@ -61,6 +67,20 @@ const std::string& LevelMaterials::resolve(const std::string& texture) {
     for (auto* tech : mat->getTechniques())
         if (auto* unit = tech->getPass(0)->getTextureUnitState("albedo")) unit->setTextureName(name);
     generatedMaterials_.push_back(mat);
+    if (map::isFenceTexture(key)) {
+        // Holes where alpha < 0.5, in the G-buffer (so the view and AO see through) and in the
+        // sun's shadow map (a caster material of its own with the same texture).
+        Ogre::MaterialPtr casterBase = mm.getByName("Obscura/ShadowCasterAlphaTest", group_);
+        if (!casterBase) throw std::runtime_error("material Obscura/ShadowCasterAlphaTest is missing (media/materials/level.material)");
+        Ogre::MaterialPtr caster = casterBase->clone(name + "/caster");
+        for (auto* tech : caster->getTechniques())
+            if (auto* unit = tech->getPass(0)->getTextureUnitState("albedo")) unit->setTextureName(name);
+        generatedMaterials_.push_back(caster);
+        for (auto* tech : mat->getTechniques()) {
+            tech->getPass(0)->getFragmentProgramParameters()->setNamedConstant("alphaCutoff", kFenceAlphaCutoff);
+            tech->setShadowCasterMaterial(caster);
+        }
+    }
     return cache_[key] = name;
 }
 

@@ -3,6 +3,8 @@
 // concrete ~0.55 grey, plaster ~0.7 warm white, ...), the multipliers are the per-texel variation.
 #include "texgen/texgen.h"
 
+#include "map/surface_rules.h"
+
 #include "core/rng.h"
 
 #include <algorithm>
@@ -254,6 +256,18 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
 
 std::uint8_t toByte(double x) { return static_cast<std::uint8_t>(std::lround(std::clamp(x, 0.0, 1.0) * 255.0)); }
 
+// Fence textures (`{` names, map/surface_rules.h): a welded grille, 8 x 8 square holes a tile (a
+// 64-unit Quake texture spans 2 m: 25 cm cells) between bars 3/8 of a cell wide (6 of 16 texels at
+// 128 px). Bars cover 1 - 0.625^2 = 61 % of the tile, so the mipmapped alpha stays above the 0.5
+// cut-off far away: the fence does not vanish at a distance. Alpha 255 on the bars, 0 in the holes.
+constexpr int kFenceCells = 8;
+constexpr double kFenceBar = 0.375;
+bool fenceBar(double u, double v) {
+    const double fu = u * kFenceCells - std::floor(u * kFenceCells), fv = v * kFenceCells - std::floor(v * kFenceCells);
+    const double h = kFenceBar / 2;
+    return fu < h || fu > 1 - h || fv < h || fv > 1 - h;
+}
+
 }  // namespace
 
 std::uint32_t nameHash(const std::string& name) {
@@ -272,6 +286,7 @@ Image generateTexture(const std::string& textureName, int size) {
     const std::string name = lower(textureName);
     const std::uint32_t seed = nameHash(name);
     const Shader shade = styleFor(name, seed);
+    const bool fence = map::isFenceTexture(name);
     Image img;
     img.width = img.height = size;
     img.rgba.resize(static_cast<std::size_t>(size * size * 4));
@@ -283,7 +298,7 @@ Image generateTexture(const std::string& textureName, int size) {
             p[0] = toByte(c.r);
             p[1] = toByte(c.g);
             p[2] = toByte(c.b);
-            p[3] = 255;
+            p[3] = fence && !fenceBar((x + 0.5) / size, (y + 0.5) / size) ? 0 : 255;
         }
     return img;
 }

@@ -25,8 +25,8 @@ constexpr int kMinSize = 8;     // below this the patterns (mortar lines, grids)
 constexpr int kMaxSize = 2048;  // 16 MB of RGBA: anything larger is a mistake for a tiling texture
 
 std::uint32_t nameHash(const std::string& name);  // FNV-1a 32-bit of the lower-cased name
-// A size x size RGBA8 image (top row first, alpha 255). Throws TexgenError if size is outside
-// kMinSize..kMaxSize.
+// A size x size RGBA8 image (top row first, alpha 255; a fence name, `{` first, gets a grille:
+// alpha 0 in its holes). Throws TexgenError if size is outside kMinSize..kMaxSize.
 Image generateTexture(const std::string& textureName, int size = 128);
 
 }  // namespace obscura::texgen

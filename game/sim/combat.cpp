@@ -38,7 +38,6 @@ constexpr double kChargeSeconds = 1.0, kThrowMin = 7, kThrowExtra = 11, kThrowLi
 constexpr double kGrenadeRadius = 0.06, kGrenadeMass = 0.4, kFuseSeconds = 2.0;
 constexpr std::size_t kMaxGrenades = 4;
 constexpr double kBounceSpeed = 1.0;  // m/s of velocity change in one tick (beyond gravity) = a bounce
-constexpr double kGravity = 20;       // the world's (PlayerTuning::gravity)
 // Movement cues: a footstep every 2.2 m walked (a stride at a run); a landing faster than 3 m/s thuds.
 constexpr double kStride = 2.2, kLandSpeed = 3.0;
 
@@ -264,7 +263,7 @@ void Combat::stepGrenades(const PlayerCommand& cmd, const PlayerState& player, s
         auto& g = grenades_[i];
         const btRigidBody& body = physics_.projectile(g.body);
         const Vec3 v = fromBt(body.getLinearVelocity());
-        const Vec3 change = v - g.lastVelocity + Vec3{0, kGravity * dt_, 0};  // what gravity did not do
+        const Vec3 change = v - g.lastVelocity + Vec3{0, kBodyGravity * dt_, 0};  // what gravity did not do
         if (length(change) > kBounceSpeed)
             events.push_back({SimEventType::GrenadeBounce, fromBt(body.getWorldTransform().getOrigin()), {}, {}, length(change), g.body, Surface::Grenade});
         g.lastVelocity = v;

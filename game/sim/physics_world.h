@@ -55,6 +55,11 @@ struct ShapeContact {
     int dynamicBody = -1;
 };
 
+// Gravity (m/s^2) on the dynamic bodies: crates, barrels, grenades. 20, not Quake's 25 (800 u/s^2,
+// the player's, PlayerTuning::gravity) nor 9.81: the grenade throw speeds, the crates' friction
+// against the player's push and the recorded replays were tuned at 20.
+constexpr double kBodyGravity = 20;
+
 class PhysicsWorld {
 public:
     explicit PhysicsWorld(double gravity);

@@ -295,7 +295,7 @@ void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double 
         accelerate(vel, wishDir, wishSpeed, t.groundAccel, dt);
         vel = alongPlane(vel, ground.normal);
         if (cmd.jump) {
-            vel.y = std::sqrt(2 * t.gravity * t.jumpHeight);
+            vel.y = t.jumpSpeed;
             onGround = false;
             jumped = true;
         }

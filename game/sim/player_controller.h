@@ -29,23 +29,31 @@ struct PlayerTuning {
     // Body: 0.35 m radius fits a 0.8 m doorway with room; 1.8 m standing, 1.1 m crouched
     // (fits under a 1.2 m vent); the eye sits 0.15 m below the top of the head.
     double radius = 0.35, standHeight = 1.8, crouchHeight = 1.1, eyeBelowTop = 0.15;
-    double stepHeight = 0.45;     // a knee-high step; stairs are 0.25 m, a crate (0.75 m) is not a step
+    // Quake figures in metres at the map scale (engine_ext/map/level.h: 32 Quake units a metre).
+    // Step: Quake's 18 units (STEPSIZE in sv_phys.c / Quake III's bg_local.h) = 0.5625 m, so the
+    // standard 16-unit risers (0.5 m) of id and TrenchBroom maps climb without a jump; 19 units do
+    // not. A 0.75 m crate (24 units) is not a step.
+    double stepHeight = 18.0 / 32.0;
     double maxSlopeDegrees = 46;  // walkable up to just past 45 degree ramps (brush-built ramps are often exactly 45)
-    // Speeds (m/s): a brisk run (Quake's 320 u/s is 10 m/s at 32 u/m: too fast for indoor levels
-    // in metres), sprint 1.5x, crouch-walk at half speed.
-    double walkSpeed = 5.0, sprintMultiplier = 1.5, crouchSpeed = 2.5;
+    // Speeds (m/s), Quake's defaults: walking at cl_forwardspeed 200 u/s = 6.25 m/s; Shift is
+    // Quake's +speed (its default Shift binding, cl_movespeedkey 2), which runs at the sv_maxspeed
+    // cap of 320 u/s = 10 m/s, hence the multiplier 320 / 200 = 1.6 (jumps built for Quake are made
+    // at that speed). Crouch-walk 2.5 m/s (80 u/s; Quake has none, Half-Life's is about 3.3 m/s).
+    double walkSpeed = 200.0 / 32.0, sprintMultiplier = 320.0 / 200.0, crouchSpeed = 2.5;
     // Quake III's pm_accelerate 10 / pm_friction 6; air control 1.5 (Q3's 1, a little more so a
-    // jump can be steered round a pillar); stopSpeed 2 m/s (Q3's 100 u/s) stops in a few ticks.
+    // jump can be steered round a pillar); stopSpeed 2 m/s (64 u/s, below Q3's 100 u/s = 3.1 m/s)
+    // stops in a few ticks without a dead stop.
     double groundAccel = 10, airAccel = 1.5, friction = 6, stopSpeed = 2.0;
-    // Gravity 20 m/s^2, not 9.81: game jumps are higher and quicker than human ones, and at 9.81
-    // a 1.1 m jump hangs for almost a second. Quake uses 800 u/s^2 = 25 m/s^2.
-    double gravity = 20;
-    // Apex of a standing jump (the jump speed is sqrt(2 g h) = 6.6 m/s): clears a 0.75 m crate
-    // and a 1 m sill with 10 cm for the capsule's round bottom to get over the edge.
-    double jumpHeight = 1.1;
+    // Quake's sv_gravity 800 u/s^2 = 25 m/s^2 for the player. (Props and grenades fall at
+    // kBodyGravity, physics_world.h: their throws and shoves were tuned for it.)
+    double gravity = 800.0 / 32.0;
+    // Quake's jump: 270 u/s straight up (QuakeC client.qc PlayerJump; Quake III's JUMP_VELOCITY)
+    // = 8.4375 m/s; the apex is v^2 / 2g = 45.6 units = 1.42 m, so Quake's jumps are makeable;
+    // clears a 0.75 m crate and a 1 m sill with room for the round bottom to get over the edge.
+    double jumpSpeed = 270.0 / 32.0;
     double maxFallSpeed = 50;  // terminal velocity (Quake's sv_maxvelocity 2000 u/s is 62 m/s)
     // Most force (N) the player shoves a crate with, towards its own walking speed: beats a 20 kg
-    // crate's friction (0.56 * 20 kg * 20 m/s^2 = 224 N) with room, not a 60 kg one's (672 N).
+    // crate's friction (0.56 * 20 kg * kBodyGravity 20 m/s^2 = 224 N) with room, not a 60 kg one's (672 N).
     double pushForce = 600;
 };
 

@@ -18,7 +18,7 @@ Simulation::Simulation(const map::Level& level, const SimConfig& config, const s
     if (!(config.tickRate >= kMinTickRate && config.tickRate <= kMaxTickRate))
         throw SimError("simulation: tick rate " + std::to_string(config.tickRate) + " Hz is outside 10..1000");
     const PlayerTuning tuning;
-    physics_ = std::make_unique<PhysicsWorld>(tuning.gravity);
+    physics_ = std::make_unique<PhysicsWorld>(kBodyGravity);
     physics_->addLevel(level);
     for (const auto& m : modelMeshes) physics_->addStaticTriangleMesh(m);
     controller_ = std::make_unique<PlayerController>(*physics_, tuning);

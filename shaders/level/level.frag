@@ -25,6 +25,8 @@ in vec4 vShadowPos;
 #include "sun_wrap.glsl"
 // Materials without an albedo texture (the GBuffer scheme's shared fallback) count as light grey.
 uniform float hasAlbedo;
+// Fence textures (`{` names): texels with alpha below this are holes (0.5); 0 = opaque surfaces.
+uniform float alphaCutoff;
 
 // Fraction of the sun reaching this point: 2x2 percentage-closer filtering of the shadow map.
 float sunVisibility(float ndotl)
@@ -48,7 +50,9 @@ void main()
 {
     vec3 n = normalize(vNormal);
     // 0.7 linear = 0.85 gamma-encoded: the light grey of untextured surfaces.
-    vec3 albedo = hasAlbedo < 0.5 ? vec3(pow(0.7, 1.0 / 2.2)) : texture(albedoMap, vUv).rgb;
+    vec4 texel = hasAlbedo < 0.5 ? vec4(vec3(pow(0.7, 1.0 / 2.2)), 1.0) : texture(albedoMap, vUv);
+    if (texel.a < alphaCutoff) discard;  // a hole: no G-buffer write, so AO and the view see through
+    vec3 albedo = texel.rgb;
 
     vec3 light = vec3(0.0);
     float ndotl = dot(n, sunDirection);

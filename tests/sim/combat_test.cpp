@@ -430,7 +430,7 @@ TEST(CombatCues, JumpStartsAndAHardLandingThuds) {
     }
     EXPECT_EQ(jumps, 1);
     EXPECT_EQ(lands, 1);
-    EXPECT_NEAR(landSpeed, std::sqrt(2 * 20 * 1.1), 0.5);  // back down at the take-off speed
+    EXPECT_NEAR(landSpeed, PlayerTuning{}.jumpSpeed, 0.5);  // back down at the take-off speed
 }
 
 TEST(TargetMoving, ATrackedMovingTargetGoesDown) {

@@ -4,6 +4,7 @@
 #include "map/map_compile.h"
 #include "sim/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -46,4 +47,23 @@ TEST(Simulation, WalksLibreQuakeE3m4) {
     for (int t = 0; t < 60; ++t) s.step({});
     EXPECT_TRUE(s.player().onGround) << "the player start should stand on the floor";
     EXPECT_GT(walk(level, 600, s), 8.0);
+}
+
+TEST(Simulation, WalksUpTheStairsLevelWithoutJumping) {
+    // tests/sim/levels/stairs.map: twelve 16-unit risers to a landing 192 units (6 m) up.
+    const auto path = std::filesystem::path(OBSCURA_SOURCE_DIR) / "tests/sim/levels/stairs.map";
+    const map::Level level = map::loadLevel(path.string());
+    sim::Simulation s(level, {});
+    int airborne = 0;
+    double highest = 0;
+    sim::PlayerCommand c;
+    c.forward = 1;
+    for (int t = 0; t < 150; ++t) {
+        s.step(c);
+        airborne += s.player().onGround ? 0 : 1;
+        highest = std::max(highest, s.player().feet.y);
+    }
+    EXPECT_NEAR(s.player().feet.y, 192.0 / 32, 0.02);  // on the landing
+    EXPECT_LT(highest, 192.0 / 32 + 0.02);              // climbed, never hopped
+    EXPECT_EQ(airborne, 0);
 }

@@ -104,21 +104,22 @@ TEST(Player, ClimbsAThirtyCentimetreStepButNotASixtyCentimetreLedge) {
 }
 
 TEST(Player, ClimbsAFullHeightStepFromStandstillWhileCrouched) {
-    // 0.45 m (the step height) with the capsule already touching it: the slowest case.
-    map::Level l = withBrush(box({-5, 0, -20}, {5, 0.45, -2}));
+    // The step height (18 Quake units) with the capsule already touching it: the slowest case.
+    const double h = PlayerTuning{}.stepHeight;
+    map::Level l = withBrush(box({-5, 0, -20}, {5, h, -2}));
     l.playerStart = {0, 0, -2 + kRadius + 0.01};
     Simulation s(l, {});
     PlayerCommand c = walk();
     c.crouch = true;
     run(s, c, 60);
-    EXPECT_NEAR(s.player().feet.y, 0.45, 0.01);
+    EXPECT_NEAR(s.player().feet.y, h, 0.01);
     EXPECT_LT(s.player().feet.z, -2.5);
 }
 
 TEST(Player, WalksUpAThirtyDegreeRampButNotASixtyDegreeSlope) {
     const double rise30 = 6 * std::tan(30 * kPi / 180);
     map::Level gentle = withBrush(ramp(-3, 3, -1, 6, rise30));
-    gentle.brushes.push_back(box({-3, 0, -17}, {3, rise30, -7}));  // landing at the top
+    gentle.brushes.push_back(box({-3, 0, -27}, {3, rise30, -7}));  // landing at the top
     Simulation a(gentle, {});
     int airborne = 0;
     for (int i = 0; i < 180; ++i) {
@@ -158,7 +159,7 @@ TEST(Player, FallsTenMetresAndLandsOnTheFloor) {
     const int ticks = ticksToLand(s, 600);
     EXPECT_TRUE(s.player().onGround);
     EXPECT_NEAR(s.player().feet.y, 0.0, 0.01);
-    EXPECT_NEAR(ticks, 60, 1);  // sqrt(2 h / g) = sqrt(20 / 20) = 1 s
+    EXPECT_NEAR(ticks, 54, 1);  // sqrt(2 h / g) = sqrt(20 / 25) = 0.894 s = 53.7 ticks
     EXPECT_LT(largestTickMotion(s, {}, 30), 1e-6);
 }
 
@@ -178,7 +179,7 @@ TEST(Player, LandsOnAThinSlabEvenAtTerminalVelocity) {
     }
 }
 
-TEST(Player, JumpReachesOnePointOneMetres) {
+TEST(Player, JumpReachesQuakesApex) {
     Simulation s(floorLevel(), {});
     run(s, {}, 10);
     const double floorY = s.player().feet.y;
@@ -192,14 +193,15 @@ TEST(Player, JumpReachesOnePointOneMetres) {
         s.step({});
         apex = std::max(apex, s.player().feet.y - floorY);
     }
-    EXPECT_NEAR(apex, 1.1, 0.02);
-    EXPECT_NEAR(airTicks, 40, 2);  // 2 v / g = 2 * 6.63 / 20 = 0.66 s
+    // Quake's 270 u/s against 800 u/s^2: 270^2 / 1600 = 45.6 units = 1.424 m.
+    EXPECT_NEAR(apex * 32, 45.6, 0.5);
+    EXPECT_NEAR(airTicks, 41, 2);  // 2 v / g = 2 * 8.4375 / 25 = 0.675 s
     EXPECT_TRUE(s.player().onGround);
     // Holding jump in the air does nothing: no double jump.
     run(s, {}, 5);
     s.step(j);
     run(s, j, 10);
-    EXPECT_LT(s.player().feet.y - floorY, 1.2);
+    EXPECT_LT(s.player().feet.y - floorY, 1.5);
 }
 
 TEST(Player, JumpsOntoACrateHighLedge) {
@@ -254,6 +256,64 @@ TEST(Player, WalksDownStairsStayingOnTheGround) {
     EXPECT_LE(biggestDrop, 0.25 + 0.01);  // at most one step a tick
 }
 
+namespace {
+// Quake units (32 a metre, engine_ext/map/level.h).
+constexpr double kUnit = 1.0 / 32;
+
+// `count` steps of `riser` x `tread` units rising towards -Z from z = -2, 6 m wide, and a 30 m
+// landing at the top; the player at the origin facing them.
+map::Level stairs(int count, double riser, double tread) {
+    map::Level l = floorLevel();
+    for (int i = 0; i < count; ++i)
+        l.brushes.push_back(box({-3, 0, -2.0 - tread * kUnit * (i + 1)}, {3, riser * kUnit * (i + 1), -2.0 - tread * kUnit * i}));
+    const double top = count * riser * kUnit, end = -2.0 - count * tread * kUnit;
+    l.brushes.push_back(box({-3, 0, end - 30}, {3, top, end}));
+    return l;
+}
+}  // namespace
+
+TEST(Player, WalksUpQuakeStairsWithoutJumping) {
+    // Quake's standard stair: 16-unit (0.5 m) risers; treads from 16 units (narrower than the
+    // capsule: it stands on step edges) to 32. Walking only, never leaving the ground.
+    for (const double tread : {16.0, 24.0, 32.0}) {
+        Simulation s(stairs(8, 16, tread), {});
+        int airborne = 0;
+        for (int i = 0; i < 180; ++i) {
+            s.step(walk());
+            airborne += s.player().onGround ? 0 : 1;
+        }
+        EXPECT_NEAR(s.player().feet.y, 8 * 16 * kUnit, 0.01) << tread << "-unit treads";
+        EXPECT_LT(s.player().feet.z, -2.0 - 8 * tread * kUnit) << tread << "-unit treads";  // on the landing
+        EXPECT_EQ(airborne, 0) << tread << "-unit treads";
+    }
+}
+
+TEST(Player, StepsUpEighteenQuakeUnitsButNotNineteen) {
+    // Quake's STEPSIZE is 18 units: one 18-unit step climbs, one 19-unit step stops the player.
+    Simulation a(stairs(1, 18, 64), {});
+    run(a, walk(), 120);
+    EXPECT_NEAR(a.player().feet.y, 18 * kUnit, 0.01);
+    EXPECT_LT(a.player().feet.z, -4.0);
+
+    Simulation b(stairs(1, 19, 64), {});
+    run(b, walk(), 120);
+    EXPECT_NEAR(b.player().feet.y, 0.0, 0.01);
+    EXPECT_GT(b.player().feet.z, -2.0 + kRadius - 0.01);
+    EXPECT_LT(largestTickMotion(b, walk(), 30), 1e-6);  // pressing against it does not jitter
+}
+
+TEST(Player, JumpsOntoAFortyUnitLedge) {
+    // Quake's 45.6-unit jump apex gets onto a 40-unit (1.25 m) ledge from a walk.
+    Simulation s(stairs(1, 40, 64), {});
+    run(s, walk(), 40);
+    ASSERT_NEAR(s.player().feet.y, 0.0, 0.01);
+    PlayerCommand c = walk();
+    c.jump = true;
+    s.step(c);
+    run(s, walk(), 60);
+    EXPECT_NEAR(s.player().feet.y, 40 * kUnit, 0.01);
+}
+
 TEST(Player, WalksOffALedgeAndFalls) {
     map::Level l = floorLevel();
     l.brushes.push_back(box({-3, 0, 3}, {3, 2.0, -2.0}));  // a 2 m platform ending at z = -2
@@ -281,9 +341,10 @@ TEST(Player, SprintIsFasterAndCrouchIsSlower) {
         return length(s.player().feet - a);
     };
     const double walking = distance(false, false), sprinting = distance(true, false), crouching = distance(false, true);
-    EXPECT_NEAR(walking, 5.0, 0.05);
-    EXPECT_NEAR(sprinting / walking, 1.5, 0.02);
-    EXPECT_NEAR(crouching / walking, 0.5, 0.02);
+    // Quake's 200 u/s walk and 320 u/s run (+speed), one second of each; crouched 2.5 m/s.
+    EXPECT_NEAR(walking * 32, 200, 2);
+    EXPECT_NEAR(sprinting * 32, 320, 3);
+    EXPECT_NEAR(crouching, 2.5, 0.03);
 }
 
 TEST(Player, StopsQuicklyOnLettingGo) {
@@ -294,7 +355,9 @@ TEST(Player, StopsQuicklyOnLettingGo) {
         s.step({});
         ++ticks;
     }
-    EXPECT_LE(ticks, 20);  // friction 6 with a 2 m/s stop speed: about a quarter second
+    // Friction 6 from the 6.25 m/s walk: e^-6t down to the 2 m/s stop speed (0.19 s), then 12 m/s^2
+    // (0.17 s): about a third of a second.
+    EXPECT_LE(ticks, 24);
     EXPECT_GT(ticks, 5);   // but not a dead stop
 }
 
@@ -322,7 +385,7 @@ TEST(Player, GarbageCommandsAreHarmless) {
     const PlayerState& p = s.player();
     for (double v : {p.feet.x, p.feet.y, p.feet.z, p.velocity.x, static_cast<double>(p.yaw), static_cast<double>(p.pitch)})
         EXPECT_TRUE(std::isfinite(v));
-    EXPECT_NEAR(p.feet.x, 4.5, 0.5);  // walked right at walking speed
+    EXPECT_NEAR(p.feet.x, 5.6, 0.6);  // walked right at walking speed (6.25 m/s, accelerating)
     EXPECT_TRUE(p.onGround);
 }
 

@@ -114,7 +114,8 @@ TEST(Simulation, TickRateSetsTheStepAndBadRatesThrow) {
     Simulation s(floorLevel(), fast);
     EXPECT_DOUBLE_EQ(s.dt(), 1.0 / 120);
     run(s, walk(), 240);  // two seconds at 120 Hz: same walking speed
-    EXPECT_NEAR(s.player().feet.z, -9.6, 0.2);
+    // Two seconds at the walking speed, less about 0.4 m getting up to it.
+    EXPECT_NEAR(s.player().feet.z, -(2 * PlayerTuning{}.walkSpeed - 0.4), 0.2);
     SimConfig bad;
     bad.tickRate = 0;
     EXPECT_THROW(Simulation(floorLevel(), bad), SimError);

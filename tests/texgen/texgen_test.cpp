@@ -256,3 +256,23 @@ TEST(TexgenTool, FailsCleanlyOnBadArguments) {
     { std::FILE* f = std::fopen(file.string().c_str(), "w"); ASSERT_NE(f, nullptr); std::fclose(f); }
     EXPECT_NE(std::system((tool + " " + file.string() + " brick" + quiet).c_str()), 0) << "output dir is a file";
 }
+
+TEST(Texgen, FenceNamesGetAGrilleWithHoles) {
+    // `{` textures (map/surface_rules.h) are alpha-tested: alpha 0 in the holes, 255 on the bars,
+    // bars 3/8 of a cell wide: 1 - 0.625^2 = 61 % opaque.
+    for (const char* name : {"{grate", "{FENCE1", "wad/{chain"}) {
+        const Image img = texgen::generateTexture(name, 128);
+        int opaque = 0, clear = 0;
+        for (std::size_t i = 3; i < img.rgba.size(); i += 4) {
+            opaque += img.rgba[i] == 255;
+            clear += img.rgba[i] == 0;
+        }
+        EXPECT_EQ(opaque + clear, 128 * 128) << name;  // a mask, nothing in between
+        EXPECT_NEAR(opaque / (128.0 * 128.0), 0.61, 0.01) << name;
+        // A hole in the middle of the first cell (16 x 16 texels), a bar along its edge.
+        EXPECT_EQ(img.rgba[(8 * 128 + 8) * 4 + 3], 0) << name;
+        EXPECT_EQ(img.rgba[(8 * 128 + 0) * 4 + 3], 255) << name;
+    }
+    const Image solid = texgen::generateTexture("grate", 64);
+    for (std::size_t i = 3; i < solid.rgba.size(); i += 4) ASSERT_EQ(solid.rgba[i], 255);
+}

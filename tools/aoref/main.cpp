@@ -29,7 +29,7 @@ std::vector<TriangleMesh> levelTriangles(const map::Level& level) {
     TriangleMesh m;
     for (const auto& b : level.brushes)
         for (const auto& f : b.faces) {
-            if (!f.visible || f.texture.rfind("sky", 0) == 0) continue;
+            if (!f.visible || f.sky) continue;  // sky: map/surface_rules.h (fences are solid here: no alpha)
             const auto base = static_cast<std::uint32_t>(m.vertices.size());
             for (const auto& v : f.vertices) m.vertices.push_back(v.position);
             for (std::uint32_t i = 1; i + 1 < f.vertices.size(); ++i)

@@ -87,7 +87,7 @@ def add(b):
 
 def stairs_y(x0, x1, y0, z0, steps, rise, run, tex):
     """Steps climbing towards +y from (y0, z0): each `rise` high and `run` deep."""
-    assert rise <= 0.45, "the player steps up 0.45 m at most"
+    assert rise <= 18 / 32, "the player steps up 18 Quake units (0.5625 m) at most (game/sim/README.md)"
     for i in range(steps):
         add(box(x0, y0 + i * run, z0, x1, y0 + (i + 1) * run, z0 + (i + 1) * rise, tex))
 

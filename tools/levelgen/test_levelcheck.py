@@ -169,7 +169,7 @@ class CheckerCatchesMistakes(unittest.TestCase):
         with self.assertRaisesRegex(AssertionError, "steeper"):
             arena.ramp_x(0, 1, 0, 1, 0, 0, 1, "concrete")  # 45 degrees
         with self.assertRaisesRegex(AssertionError, "steps up"):
-            arena.stairs_y(0, 1, 0, 0, 2, 0.5, 0.5, "concrete")
+            arena.stairs_y(0, 1, 0, 0, 2, 19 / 32, 0.5, "concrete")  # 19 units: one past the step
 
 
 if __name__ == "__main__":
