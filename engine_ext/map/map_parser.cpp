@@ -3,6 +3,7 @@
 
 #include "map/input_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -178,8 +179,15 @@ MapFace face(Lexer& lx) {
     f.rotation = lx.number("rotation");
     f.uScale = lx.number("x scale");
     f.vScale = lx.number("y scale");
-    // Quake 2/3 maps add content flags, surface flags and value on the same line: accept them.
-    while (lx.peek() != '(' && lx.peek() != '}' && lx.peek() != '\0') lx.number("surface flags");
+    // Quake 2/3 maps add content flags, surface flags and value on the same line: keep the three
+    // (as integers: flags are bit sets; a value past int's range is clamped), accept more.
+    int* const flags[] = {&f.contents, &f.surfaceFlags, &f.value};
+    for (int k = 0; lx.peek() != '(' && lx.peek() != '}' && lx.peek() != '\0'; ++k) {
+        const double v = lx.number("surface flags");
+        if (k >= 3) continue;
+        f.hasFlags = true;
+        *flags[k] = static_cast<int>(std::clamp(v, -2147483648.0, 2147483647.0));
+    }
     return f;
 }
 

@@ -41,6 +41,10 @@ struct MapFace {
     bool valve220 = false;
     Vec3 uAxis, vAxis;  // Valve-220 only
     double uOffset = 0, vOffset = 0, rotation = 0, uScale = 1, vScale = 1;
+    // Quake 2/3 faces end in `contents surfaceFlags value` (map/liquid.h reads the liquid bits);
+    // hasFlags is false for Quake / Valve-220 faces, which end at the scales.
+    bool hasFlags = false;
+    int contents = 0, surfaceFlags = 0, value = 0;
     SourcePos pos;
 };
 
