@@ -3,6 +3,8 @@
 // Obscura/Level), so an unknown texture is never an error.
 #pragma once
 
+#include "map/level.h"
+
 #include <OgreMaterial.h>
 #include <OgreTexture.h>
 
@@ -21,13 +23,20 @@ public:
 
     // The material name for a map texture (case-insensitive). Never throws for unknown names.
     const std::string& resolve(const std::string& texture);
+    // The material for a liquid face: alpha >= 1 the texture's own (opaque, in the G-buffer);
+    // below, a clone of Obscura/Liquid (forward, translucent) with the texture's albedo, the alpha,
+    // and a glow for lava and teleporters. One per texture and alpha (in 1/1000 steps).
+    const std::string& resolveLiquid(const std::string& texture, map::LiquidKind kind, double alpha);
     std::size_t generatedCount() const { return generatedMaterials_.size(); }
+    // The translucent liquid materials made so far (the frame binds the G-buffer's depth to them).
+    const std::vector<Ogre::MaterialPtr>& liquidMaterials() const { return liquidMaterials_; }
 
 private:
     std::string group_;
     std::map<std::string, std::string> cache_;  // lower-cased texture -> material name
     std::vector<Ogre::MaterialPtr> generatedMaterials_;
     std::vector<Ogre::TexturePtr> generatedTextures_;
+    std::vector<Ogre::MaterialPtr> liquidMaterials_;  // also in generatedMaterials_
 };
 
 }  // namespace obscura::render
