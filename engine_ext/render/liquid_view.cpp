@@ -18,9 +18,9 @@ LiquidMedium liquidMedium(map::LiquidKind kind) {
     // blends, v_cshift: slime green, lava orange; its water is brown, ours the brief's blue-green).
     switch (kind) {
         case map::LiquidKind::Water:
-        case map::LiquidKind::Teleport: return {{0.55, 0.85, 0.9}, {0.012, 0.05, 0.06}, 1.0 / 6.0};
-        case map::LiquidKind::Slime: return {{0.45, 0.9, 0.3}, {0.02, 0.07, 0.01}, 1.0 / 2.5};
-        case map::LiquidKind::Lava: return {{1.0, 0.5, 0.2}, {0.6, 0.15, 0.02}, 1.0 / 0.4};
+        case map::LiquidKind::Teleport: return {{0.4, 0.75, 0.8}, {0.012, 0.05, 0.06}, 1.0 / 6.0};
+        case map::LiquidKind::Slime: return {{0.35, 0.8, 0.2}, {0.02, 0.07, 0.01}, 1.0 / 2.5};
+        case map::LiquidKind::Lava: return {{1.0, 0.4, 0.1}, {0.6, 0.15, 0.02}, 1.0 / 0.4};
         case map::LiquidKind::None: break;
     }
     return {};

@@ -10,8 +10,8 @@
 //     teleporters glow (Quake draws them full bright);
 //   - a Fresnel reflection of the sky ambient (Schlick, water's F0 = 0.02) brightens and
 //     thickens the surface at grazing angles;
-//   - seen from inside a liquid (mediumDensity > 0), the surface is tinted and fogged by its own
-//     distance here, and its pixel is marked (alpha 0 in `lit`, through the blend's alpha factors)
+//   - seen from inside a liquid (mediumDensity > 0), the surface is fogged by its own distance
+//     here (the output pass tints the whole view), and its pixel is marked (alpha 0 in `lit`, through the blend's alpha factors)
 //     so the output pass does not fog it again by the depth of what lies behind it.
 uniform sampler2D albedoMap;
 uniform sampler2D gbufferDepth;  // the opaque scene's linear view depth, 0 = sky (engine_ext/frame)
@@ -63,12 +63,11 @@ void main()
     float a = mix(alpha, 1.0, fresnel);
 
     if (mediumDensity > 0.0) {
-        // out = src * A + dst * (1 - A) must equal fog(tint(a * colour + (1 - a) * dst)).
+        // out = src * A + dst * (1 - A) must equal fog(a * colour + (1 - a) * dst) by this
+        // surface's distance (the output pass tints the whole view, this pixel too).
         float keep = exp(-mediumDensity * dist);
         float blend = 1.0 - keep * (1.0 - a);
-        vec3 src = (keep * a * colour * mediumTint + (1.0 - keep) * mediumFog) / max(blend, 1e-4);
-        // The tint of what lies behind applies through the blend only approximately (the blend
-        // factor is one number): the fog dominates from a metre or two on.
+        vec3 src = (keep * a * colour + (1.0 - keep) * mediumFog) / max(blend, 1e-4);
         fragColour = vec4(src, blend);
         return;
     }
