@@ -229,6 +229,11 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     hs.frameMsIsFixed = frame.frameMsIsFixed;
     hs.status.push_back("AO: " + aoStatus() + (frame_->view() == "ao" ? " (AO only)" : ""));
     if (frame_->view() != "scene" && frame_->view() != "ao") hs.status.push_back("view: " + frame_->view() + " (V)");
+    // Health shows only once slime or lava took some (the usual HUD stays as it was).
+    const auto& player = session.sim().player();
+    if (player.health < 100 || session.sim().deaths() > 0)
+        hs.status.push_back("health " + std::to_string(player.health) +
+                            (session.sim().deaths() > 0 ? ", died " + std::to_string(session.sim().deaths()) + "x" : std::string()));
     const auto& w = session.sim().weapon();
     hs.magazine = w.magazine;
     hs.magazineSize = w.magazineSize;

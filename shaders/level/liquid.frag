@@ -10,7 +10,8 @@
 //     teleporters glow (Quake draws them full bright);
 //   - a Fresnel reflection of the sky ambient (Schlick, water's F0 = 0.02) brightens and
 //     thickens the surface at grazing angles;
-//   - seen from inside a liquid (mediumDensity > 0), the surface is fogged by its own distance
+//   - seen from inside a liquid (mediumDensity > 0), the surface mirrors the water beyond the
+//     critical angle, and is fogged by its own distance
 //     here (the output pass tints the whole view), and its pixel is marked (alpha 0 in `lit`, through the blend's alpha factors)
 //     so the output pass does not fog it again by the depth of what lies behind it.
 uniform sampler2D albedoMap;
@@ -63,6 +64,12 @@ void main()
     float a = mix(alpha, 1.0, fresnel);
 
     if (mediumDensity > 0.0) {
+        // From inside, past the critical angle (48.6 degrees from the normal for water to air,
+        // cos = 0.66) the surface reflects the water below it wholly (total internal reflection):
+        // a bright window overhead in a water-coloured ceiling (Snell's window).
+        float window = smoothstep(0.6, 0.72, abs(dot(n, v)));
+        colour = mix(mediumFog * 2.0, colour, window);
+        a = mix(1.0, a, window);
         // out = src * A + dst * (1 - A) must equal fog(a * colour + (1 - a) * dst) by this
         // surface's distance (the output pass tints the whole view, this pixel too).
         float keep = exp(-mediumDensity * dist);
