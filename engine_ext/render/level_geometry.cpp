@@ -85,6 +85,7 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
         if (key.batch == Batch::Sky) mo->setVisibilityFlags(kSkyVisibilityFlag);
         if (key.batch == Batch::TranslucentLiquid) {
             mo->setRenderQueueGroup(frame::kLiquidQueue);  // forward, after lighting (frame.compositor)
+            mo->setVisibilityFlags(kLiquidVisibilityFlag);
             ++stats_.liquidBatches;
         }
         for (const auto& [material, faces] : byMaterial) {

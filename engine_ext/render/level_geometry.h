@@ -33,6 +33,9 @@ struct LevelGeometryStats {
 // Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
 // that must not see the sky, such as the AO height map, mask it out.
 constexpr unsigned kSkyVisibilityFlag = 1u << 30;
+// Visibility flag of translucent liquids' batches: the AO height map leaves them out too (the sky
+// shows through water).
+constexpr unsigned kLiquidVisibilityFlag = 1u << 29;
 
 class LevelGeometry {
 public:

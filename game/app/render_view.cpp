@@ -112,7 +112,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     // The heightfield mode's height map, over the level's brushes (models stand inside them).
     if (!level.bounds.empty())
         ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level.bounds.min), render::toOgre(level.bounds.max)),
-                            render::kSkyVisibilityFlag);
+                            render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
     applyAo(aoSettings(settings));
     if (settings.view != "scene") {
         frame_->setView(settings.view);
