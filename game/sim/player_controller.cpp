@@ -432,7 +432,11 @@ void PlayerController::waterMove(const Body& b, PlayerState& s, const PlayerComm
         accelerate(vel, normalize(wishVel), wishSpeed, swim_.waterAccel, dt);
         m.vel = m.moveVel = vel;  // no gravity: the water holds the player up
     }
+    // Standing on the bottom, steps still climb (a pool's stairs lead out of it).
+    const bool grounded = s.waterJumpTime <= 0 && findGround(b, m.centre, kGroundProbe).walkable;
+    const Move start = m;
     move(b, dt, false, m);
+    if (grounded && m.hitWall) stepUp(b, dt, start, m);
     const Ground below = findGround(b, m.centre, kGroundProbe);
     s.onGround = below.walkable && dot(m.vel, below.normal) <= kLeaveGroundSpeed;
     if (s.onGround && m.vel.y < 0) m.vel.y = 0;  // resting on the pool's floor

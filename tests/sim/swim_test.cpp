@@ -129,6 +129,20 @@ TEST(Swim, JumpsOutOfTheWaterAtAnEdge) {
     EXPECT_EQ(s.player().waterLevel, 0);
 }
 
+TEST(Swim, WalksUpAStepOutOfWaistDeepWater) {
+    // Waist-deep water (swimming, level 2) ending at a 0.42 m step (above the capsule's round
+    // bottom: it does not slide over it), north (-Z) of the player.
+    map::Level l = floorLevel();
+    l.brushes.push_back(box({-20, 0, -20}, {20, 0.42, -3}));
+    l.brushes.push_back(liquidBox({-20, 0, -3}, {20, 1.2, 20}));
+    Simulation s(l, {});
+    s.step({});
+    ASSERT_EQ(s.player().waterLevel, 2);
+    run(s, walk(), 120);
+    EXPECT_LT(s.player().feet.z, -3.5);
+    EXPECT_NEAR(s.player().feet.y, 0.42, 0.02);
+}
+
 TEST(Swim, LavaAndSlimeHurtAsInQuake) {
     // Lava: 10 x waterlevel every 0.2 s; slime: 4 x waterlevel every second; water: nothing.
     Simulation lava(pool(0.3, map::LiquidKind::Lava), {});
