@@ -93,12 +93,20 @@ double liquidAlpha(const LevelEntity& worldspawn, const LevelEntity& owner, Liqu
         if (!problem.empty() && problems) problems->push_back(problem);
         return v;
     };
-    if (&owner != &worldspawn)
-        if (const auto v = read(owner, "alpha")) return *v;
     const std::string own = std::string(liquidName(kind)) + "alpha";
-    if (kind != LiquidKind::Water)
-        if (const auto v = read(worldspawn, own)) return *v;
-    if (const auto v = read(worldspawn, "wateralpha")) return *v;
+    // An entity's liquid keys: the kind's own, else water's.
+    const auto liquidKeys = [&](const LevelEntity& e) -> std::optional<double> {
+        if (kind != LiquidKind::Water)
+            if (const auto v = read(e, own)) return v;
+        return read(e, "wateralpha");
+    };
+    // A brush entity's `alpha`, then its own liquid keys (a func_water with `_wateralpha`), then
+    // worldspawn's.
+    if (&owner != &worldspawn) {
+        if (const auto v = read(owner, "alpha")) return *v;
+        if (const auto v = liquidKeys(owner)) return *v;
+    }
+    if (const auto v = liquidKeys(worldspawn)) return *v;
     return 1.0;
 }
 

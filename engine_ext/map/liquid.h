@@ -12,7 +12,8 @@
 // Opacity, as QuakeSpasm's R_ParseWorldspawn reads it: worldspawn `wateralpha`, `slimealpha`,
 // `lavaalpha`, `telealpha`, each with or without a leading underscore (`_wateralpha`); a kind
 // without its own key uses the water one; none at all: 1, opaque, as in Quake. A liquid brush
-// entity's own `alpha`/`_alpha` (QuakeSpasm's entity alpha) wins over worldspawn. Quake 2's
+// entity's own `alpha`/`_alpha` (QuakeSpasm's entity alpha), then its own liquid keys, win over
+// worldspawn's. Quake 2's
 // SURF_TRANS33 / SURF_TRANS66 surface flags give 0.33 / 0.66.
 #pragma once
 

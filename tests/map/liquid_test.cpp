@@ -87,6 +87,10 @@ TEST(Liquid, AlphaKeysFollowQuakeSpasm) {
         ASSERT_EQ(l.brushes.size(), 1u);
         EXPECT_DOUBLE_EQ(l.brushes[0].liquidAlpha, 0.25);
         EXPECT_FALSE(l.brushes[0].solid);
+        // ... and so does its own _wateralpha.
+        const Level k = compile(entity(kWorld + "\n\"wateralpha\" \"0.5\"") +
+                                entity("\"classname\" \"func_water\"\n\"_wateralpha\" \"0.3\"", water));
+        EXPECT_DOUBLE_EQ(k.brushes[0].liquidAlpha, 0.3);
     }
     {
         // Out of range or not a number: a warning naming the line, and the key is ignored.
