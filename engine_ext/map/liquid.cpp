@@ -86,11 +86,11 @@ std::optional<double> liquidAlphaKey(const LevelEntity& entity, const std::strin
     return std::nullopt;
 }
 
-double liquidAlpha(const LevelEntity& worldspawn, const LevelEntity& owner, LiquidKind kind, std::vector<std::string>* problems) {
+double liquidAlpha(const LevelEntity& worldspawn, const LevelEntity& owner, LiquidKind kind, std::vector<LiquidKeyProblem>* problems) {
     const auto read = [&](const LevelEntity& e, const std::string& key) {
         std::string problem;
         const auto v = liquidAlphaKey(e, key, &problem);
-        if (!problem.empty() && problems) problems->push_back(problem);
+        if (!problem.empty() && problems) problems->push_back({e.pos, problem});
         return v;
     };
     const std::string own = std::string(liquidName(kind)) + "alpha";

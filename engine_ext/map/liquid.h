@@ -41,8 +41,13 @@ int liquidHarm(LiquidKind kind);
 // nothing.
 std::optional<double> liquidAlphaKey(const LevelEntity& entity, const std::string& key, std::string* problem);
 // The opacity of a liquid of `kind` owned by `owner` (worldspawn or a brush entity), from the
-// keys above; problems are appended to `problems` as "'key' value 'v' ...".
-double liquidAlpha(const LevelEntity& worldspawn, const LevelEntity& owner, LiquidKind kind, std::vector<std::string>* problems);
+// keys above; problems are appended to `problems`: where the entity holding the key opens, and
+// "'key' value 'v' ...".
+struct LiquidKeyProblem {
+    SourcePos at;
+    std::string what;
+};
+double liquidAlpha(const LevelEntity& worldspawn, const LevelEntity& owner, LiquidKind kind, std::vector<LiquidKeyProblem>* problems);
 
 // True if p lies inside the convex brush (on its boundary counts), from its faces' planes. A brush
 // without faces (built from hull points only) contains nothing.

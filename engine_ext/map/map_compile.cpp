@@ -288,11 +288,11 @@ private:
             b.faces.push_back(std::move(poly));
         }
         if (b.liquid != LiquidKind::None) {
-            std::vector<std::string> problems;
+            std::vector<LiquidKeyProblem> problems;
             const LevelEntity& owner = current_;  // (pushed to the level after its brushes)
             b.liquidAlpha = std::min(q2Alpha, liquidAlpha(worldspawn(), owner, b.liquid, &problems));
-            for (const auto& p : problems)
-                if (reported_.insert(std::to_string(entityIndex) + p).second) warnAt(owner.pos, p);
+            for (const auto& p : problems)  // once per key, not per brush
+                if (reported_.insert(std::to_string(p.at.line) + ":" + p.what).second) warnAt(p.at, p.what);
         }
         level_.bounds.extend(b.bounds.min);
         level_.bounds.extend(b.bounds.max);
@@ -313,7 +313,7 @@ private:
     double inv_;
     std::set<std::string> unknown_;
     LevelEntity current_;             // the entity whose brushes are being compiled
-    std::set<std::string> reported_;  // liquid alpha problems, once per entity
+    std::set<std::string> reported_;  // liquid alpha problems, once each
     int startPriority_ = 99;  // info_player_start (0) beats deathmatch (1) beats coop (2)
 };
 }  // namespace
