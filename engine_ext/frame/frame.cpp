@@ -264,6 +264,20 @@ void Frame::publish() {
     }
 }
 
+void Frame::addSceneMaterial(const Ogre::MaterialPtr& material) {
+    sceneMaterials_.push_back(material);
+    if (!published_.empty()) bindSceneMaterial(*material);
+}
+
+void Frame::bindSceneMaterial(Ogre::Material& material) {
+    for (Ogre::Technique* t : material.getTechniques())
+        for (Ogre::Pass* pass : t->getPasses())
+            for (unsigned short i = 0; i < pass->getNumTextureUnitStates(); ++i) {
+                Ogre::TextureUnitState* unit = pass->getTextureUnitState(i);
+                if (auto it = published_.find(unit->getName()); it != published_.end()) unit->setTexture(it->second);
+            }
+}
+
 void Frame::rebuild() {
     for (;;) {
         removeAll();
@@ -273,6 +287,7 @@ void Frame::rebuild() {
         for (auto& e : chain_) complete = instance(*e) && complete;
         if (!complete) continue;  // a technique was turned off: plan again without it
         publish();
+        for (const auto& m : sceneMaterials_) bindSceneMaterial(*m);
         // Compile now, outside any render: every quad pass is set up (textures bound, uniform names
         // checked) here rather than inside the first frame.
         Ogre::CompositorManager::getSingleton().getCompositorChain(&viewport_)->_compile();

@@ -29,9 +29,12 @@ class Viewport;
 
 namespace obscura::frame {
 
-// Additive effects (muzzle flash, sparks) are in this queue: drawn into the HDR light after the
-// lighting pass; the G-buffer's scene pass stops before it.
-constexpr Ogre::uint8 kEffectsQueue = Ogre::RENDER_QUEUE_8;
+// Translucent liquids (engine_ext/render/level_geometry.cpp) and then additive effects (muzzle
+// flash, sparks) are in these queues: drawn into the HDR light after the lighting pass, liquids
+// first so a flash above the water glows over its surface; the G-buffer's scene pass stops before
+// them (media/frame/frame.compositor: queues 80-89 after lighting).
+constexpr Ogre::uint8 kLiquidQueue = Ogre::RENDER_QUEUE_8;
+constexpr Ogre::uint8 kEffectsQueue = Ogre::RENDER_QUEUE_8 + 1;
 
 struct FrameSettings {
     int maxRenderTargets = 0;                     // pretend the GPU has at most this many; 0: its own
@@ -50,6 +53,11 @@ public:
     // A technique the game made (not owned; it must outlive the frame).
     void add(Technique& technique);
     void setExposure(float exposure) { settings_.exposure = exposure; }
+    // A scene material drawn after lighting that reads the frame's buffers (liquids read the
+    // G-buffer's depth: they test against it in their shader, the depth buffer of `lit` not being
+    // the G-buffer's on every driver): its texture units named like a published buffer
+    // (gbufferDepth, ...) are bound at every rebuild. The material must outlive the frame.
+    void addSceneMaterial(const Ogre::MaterialPtr& material);
     // What the frame shows: "scene", "ao" (the AO alone), or a technique's debug view.
     std::vector<std::string> views() const;
     void setView(const std::string& view);
@@ -90,6 +98,8 @@ private:
     std::string builtKey_;
     std::map<const Technique*, std::pair<std::string, std::string>> off_;  // configuration key -> reason
     std::map<std::string, Ogre::TexturePtr> published_;  // texture-unit name -> texture
+    std::vector<Ogre::MaterialPtr> sceneMaterials_;       // addSceneMaterial
+    void bindSceneMaterial(Ogre::Material& material);
     Ogre::TexturePtr noAo_, noVolume_, noDecals_;  // bound while no AO / no volumes / no decals run
     Ogre::MaterialPtr gbufferFallback_;
     bool split_ = false;  // the G-buffer in two passes (fewer than FRAME_GBUFFER_TARGETS targets)

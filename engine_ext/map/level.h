@@ -52,12 +52,17 @@ struct LevelPolygon {
     int surfaceValue = 0;
 };
 
+// What a liquid brush holds (map/liquid.h classifies it; Quake's CONTENTS_* order of harm).
+enum class LiquidKind : std::uint8_t { None, Water, Slime, Lava, Teleport };
+
 struct LevelBrush {
-    std::vector<LevelPolygon> faces;
+    std::vector<LevelPolygon> faces;  // every plane of the brush, invisible ones included
     std::vector<Vec3> hullPoints;  // the brush's unique vertices (for convex-hull colliders, voxelising)
     Aabb bounds;
     bool solid = true;    // blocks the player, bullets and smoke
     bool visible = true;  // has at least one visible face
+    LiquidKind liquid = LiquidKind::None;  // a liquid volume (non-solid, drawn two-sided)
+    double liquidAlpha = 1;                // its opacity, 0..1 (map/liquid.h: the alpha keys)
     int entityIndex = 0;  // index into Level::entities (0 = worldspawn)
     SourcePos pos;        // where the brush opens in the .map
 };

@@ -5,6 +5,7 @@
 #include "map/entity_classes.h"
 #include "map/input_file.h"
 #include "map/surface_rules.h"
+#include "map/liquid.h"
 
 #include <algorithm>
 #include <cctype>
@@ -184,6 +185,7 @@ public:
         }
         if (known && known->role == EntityRole::Light && e.hasOrigin) addLight(me, e);
         if (known && known->role == EntityRole::Model) addModel(me, e, static_cast<int>(index));
+        current_ = e;  // its keys, for the liquid alpha of its brushes (pushed after them)
         for (const MapBrush& mb : me.brushes) addBrush(mb, brushRole(known, c), static_cast<int>(index));
         level_.entities.push_back(std::move(e));
     }
@@ -265,18 +267,29 @@ private:
         b.pos = mb.pos;
         b.solid = role == BrushRole::Solid;
         b.visible = false;
+        double q2Alpha = 1;  // Quake 2 SURF_TRANS33/66 on a liquid face
         for (const BrushPolygon& bp : br.polygons) {
             const MapFace& face = mb.faces[static_cast<std::size_t>(bp.faceIndex)];
             LevelPolygon poly;
             poly.texture = face.texture;
             poly.normal = toWorld(bp.normal);
-            poly.visible = role != BrushRole::Volume && !isInvisibleTexture(face.texture);
+            poly.visible = role != BrushRole::Volume && !isInvisibleTexture(face.texture) && !isLiquidSkipTexture(face.texture);
             poly.contents = face.contents;
             poly.surfaceFlags = face.surfaceFlags;
             poly.surfaceValue = face.value;
             poly.sky = isSkyFace(face.texture, face.surfaceFlags);
             poly.fence = isFenceTexture(face.texture);
-            if (isLiquidTexture(face.texture)) b.solid = false;
+            // A liquid face makes the brush a liquid volume (non-solid); Quake 2 content bits win
+            // over the name (their liquids have no '*'). The most harmful face decides.
+            const LiquidKind kind = face.hasFlags && liquidKindOfContents(face.contents) != LiquidKind::None
+                                        ? liquidKindOfContents(face.contents)
+                                        : liquidKindOfTexture(face.texture);
+            if (kind != LiquidKind::None) {
+                b.solid = false;
+                if (liquidHarm(kind) > liquidHarm(b.liquid)) b.liquid = kind;
+                if (face.hasFlags && (face.surfaceFlags & (kQ2SurfTrans33 | kQ2SurfTrans66)))
+                    q2Alpha = std::min(q2Alpha, face.surfaceFlags & kQ2SurfTrans33 ? 0.33 : 0.66);
+            }
             const auto [tw, th] = textureSize(face.texture);
             for (std::size_t k = 0; k < bp.points.size(); ++k) {
                 LevelVertex v;
@@ -294,10 +307,20 @@ private:
             b.visible |= poly.visible;
             b.faces.push_back(std::move(poly));
         }
+        if (b.liquid != LiquidKind::None) {
+            std::vector<LiquidKeyProblem> problems;
+            const LevelEntity& owner = current_;  // (pushed to the level after its brushes)
+            b.liquidAlpha = std::min(q2Alpha, liquidAlpha(worldspawn(), owner, b.liquid, &problems));
+            for (const auto& p : problems)  // once per key, not per brush
+                if (reported_.insert(std::to_string(p.at.line) + ":" + p.what).second) warnAt(p.at, p.what);
+        }
         level_.bounds.extend(b.bounds.min);
         level_.bounds.extend(b.bounds.max);
         level_.brushes.push_back(std::move(b));
     }
+
+    // The worldspawn's keys (the liquid alpha keys); an empty entity before it is compiled.
+    const LevelEntity& worldspawn() const { return level_.entities.empty() ? current_ : level_.entities.front(); }
 
     // Corner welding distance for hullPoints, metres: far below any real brush feature, far above
     // the rounding of the clipped corners.
@@ -308,6 +331,8 @@ private:
     Level& level_;
     std::vector<std::string>* warnings_;
     double inv_;
+    LevelEntity current_;             // the entity whose brushes are being compiled
+    std::set<std::string> reported_;  // liquid alpha problems, once each
     int startPriority_ = kNoStart;
 };
 }  // namespace
@@ -333,6 +358,7 @@ Level compileLevel(const MapFile& map, const CompileOptions& options, std::vecto
 
     EntityCompiler compiler(map, options, level, warnings);
     for (std::size_t i = 0; i < map.entities.size(); ++i) compiler.compile(i);
+    hideBuriedLiquidFaces(level);  // a pool's sides and bottom against its walls are not drawn
     if (!level.hasPlayerStart) compiler.warn(map.path + ": no info_player_start; the player starts at the origin");
     // Every placed thing within the level's box plus a margin: a player start or model far out
     // reaches OGRE's shadow camera as a degenerate box (an assertion), and is a broken level anyway.

@@ -1,6 +1,8 @@
 // Turns a compiled level (map::Level) into OGRE geometry: visible brush faces batched per
 // material inside spatial chunks (one ManualObject per chunk, one section per material), so a
 // big map draws in few batches yet still frustum-culls; plus an OGRE point light per map light.
+// Liquid faces are two-sided (each also drawn facing in); translucent ones (alpha < 1) are
+// chunked apart, in frame::kLiquidQueue, casting no shadow (shaders/level/liquid.frag).
 // RAII: everything created here is destroyed with the object.
 #pragma once
 
@@ -23,13 +25,17 @@ class LevelMaterials;
 struct LevelGeometryStats {
     std::size_t chunks = 0;
     std::size_t batches = 0;  // ManualObject sections = draw calls before culling
-    std::size_t triangles = 0;
+    std::size_t triangles = 0;     // liquids' back faces included
+    std::size_t liquidBatches = 0;  // chunks of translucent liquid (frame::kLiquidQueue)
     std::size_t lights = 0;
 };
 
 // Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
 // that must not see the sky, such as the AO height map, mask it out.
 constexpr unsigned kSkyVisibilityFlag = 1u << 30;
+// Visibility flag of translucent liquids' batches: the AO height map leaves them out too (the sky
+// shows through water).
+constexpr unsigned kLiquidVisibilityFlag = 1u << 29;
 
 class LevelGeometry {
 public:

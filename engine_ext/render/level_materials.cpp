@@ -7,6 +7,7 @@
 #include <OgreImage.h>
 #include <OgreMaterialManager.h>
 #include <OgreLogManager.h>
+#include <OgreGpuProgramParams.h>
 #include <OgrePass.h>
 #include <OgreTechnique.h>
 #include <OgreTextureManager.h>
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 namespace obscura::render {
 
@@ -82,6 +84,33 @@ const std::string& LevelMaterials::resolve(const std::string& texture, bool sky)
         }
     }
     return cache_[key] = name;
+}
+
+const std::string& LevelMaterials::resolveLiquid(const std::string& texture, map::LiquidKind kind, double alpha) {
+    if (!(alpha < 1.0)) return resolve(texture);
+    const long milli = std::lround(std::clamp(alpha, 0.0, 1.0) * 1000.0);
+    const std::string key = "liquid/" + lower(texture) + "/" + std::to_string(milli);
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+
+    // The albedo the opaque material samples (authored or generated).
+    auto& mm = Ogre::MaterialManager::getSingleton();
+    Ogre::MaterialPtr opaque = mm.getByName(resolve(texture), group_);
+    std::string albedo = "default.png";
+    if (opaque && opaque->getNumTechniques() > 0)
+        if (auto* unit = opaque->getTechnique(0)->getPass(0)->getTextureUnitState("albedo")) albedo = unit->getTextureName();
+
+    Ogre::MaterialPtr base = mm.getByName("Obscura/Liquid", group_);
+    if (!base) throw std::runtime_error("material Obscura/Liquid is missing (media/materials/level.material)");
+    Ogre::MaterialPtr mat = base->clone(key);
+    Ogre::Pass* pass = mat->getTechnique(0)->getPass(0);
+    pass->getTextureUnitState("albedo")->setTextureName(albedo);
+    const bool glows = kind == map::LiquidKind::Lava || kind == map::LiquidKind::Teleport;
+    pass->getFragmentProgramParameters()->setNamedConstant("alpha", static_cast<float>(milli / 1000.0));
+    pass->getFragmentProgramParameters()->setNamedConstant("glow", glows ? 1.0f : 0.0f);
+    generatedMaterials_.push_back(mat);
+    liquidMaterials_.push_back(mat);
+    return cache_[key] = key;
 }
 
 }  // namespace obscura::render

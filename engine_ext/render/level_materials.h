@@ -6,6 +6,8 @@
 // material (a clone of Obscura/ShadowCasterAlphaTest with the same texture).
 #pragma once
 
+#include "map/level.h"
+
 #include <OgreMaterial.h>
 #include <OgreTexture.h>
 
@@ -25,13 +27,20 @@ public:
     // The material name for a map texture (case-insensitive); `sky` (LevelPolygon::sky) picks the
     // sky material whatever the name. Never throws for unknown names.
     const std::string& resolve(const std::string& texture, bool sky = false);
+    // The material for a liquid face: alpha >= 1 the texture's own (opaque, in the G-buffer);
+    // below, a clone of Obscura/Liquid (forward, translucent) with the texture's albedo, the alpha,
+    // and a glow for lava and teleporters. One per texture and alpha (in 1/1000 steps).
+    const std::string& resolveLiquid(const std::string& texture, map::LiquidKind kind, double alpha);
     std::size_t generatedCount() const { return generatedMaterials_.size(); }
+    // The translucent liquid materials made so far (the frame binds the G-buffer's depth to them).
+    const std::vector<Ogre::MaterialPtr>& liquidMaterials() const { return liquidMaterials_; }
 
 private:
     std::string group_;
     std::map<std::string, std::string> cache_;  // lower-cased texture -> material name
     std::vector<Ogre::MaterialPtr> generatedMaterials_;
     std::vector<Ogre::TexturePtr> generatedTextures_;
+    std::vector<Ogre::MaterialPtr> liquidMaterials_;  // also in generatedMaterials_
 };
 
 }  // namespace obscura::render

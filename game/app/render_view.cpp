@@ -6,6 +6,7 @@
 #include "render/level_geometry.h"
 #include "render/level_lighting.h"
 #include "render/level_materials.h"
+#include "render/liquid_view.h"
 #include "render/model_loader.h"
 #include "render/ogre_convert.h"
 #include "render/prop_view.h"
@@ -79,6 +80,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     render::applyLevelLighting(level);
     render::createSun(*scene_, level);
     levelGeometry_ = std::make_unique<render::LevelGeometry>(*scene_, level, *materials_);
+    liquids_ = map::LiquidQuery(level);
     // misc_model meshes, visible only: the session built their colliders from the same files.
     const auto modelDirs = Session::modelSearchDirs(settings);
     for (const auto& m : level.models)
@@ -89,7 +91,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::ostringstream os;
     os << "level " << settings.level << ": " << level.brushes.size() << " brushes, " << s.triangles << " triangles in "
-       << s.batches << " batches (" << s.chunks << " chunks), " << s.lights << " lights, " << level.models.size()
+       << s.batches << " batches (" << s.chunks << " chunks, " << s.liquidBatches << " translucent liquid), " << s.lights << " lights, " << level.models.size()
        << " models, " << materials_->generatedCount() << " generated materials; scene built in " << ms << " ms";
     Ogre::LogManager::getSingleton().logMessage(os.str());
     std::cout << os.str() << "\n";
@@ -98,6 +100,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     fs.maxRenderTargets = settings.debugMaxRenderTargets;
     fs.unsupportedFormats = settings.debugUnsupportedFormats;
     frame_ = std::make_unique<frame::Frame>(*viewport_, *camera_, fs);
+    for (const auto& m : materials_->liquidMaterials()) frame_->addSceneMaterial(m);  // they read gbufferDepth
     ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
     smoke_ = std::make_unique<smoke::SmokeRender>();
     smoke_->setLights(*scene_);  // the level's point lights (LevelGeometry made them above) light the smoke too
@@ -109,7 +112,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     // The heightfield mode's height map, over the level's brushes (models stand inside them).
     if (!level.bounds.empty())
         ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level.bounds.min), render::toOgre(level.bounds.max)),
-                            render::kSkyVisibilityFlag);
+                            render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
     applyAo(aoSettings(settings));
     if (settings.view != "scene") {
         frame_->setView(settings.view);
@@ -226,6 +229,11 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     hs.frameMsIsFixed = frame.frameMsIsFixed;
     hs.status.push_back("AO: " + aoStatus() + (frame_->view() == "ao" ? " (AO only)" : ""));
     if (frame_->view() != "scene" && frame_->view() != "ao") hs.status.push_back("view: " + frame_->view() + " (V)");
+    // Health shows only once slime or lava took some (the usual HUD stays as it was).
+    const auto& player = session.sim().player();
+    if (player.health < 100 || session.sim().deaths() > 0)
+        hs.status.push_back("health " + std::to_string(player.health) +
+                            (session.sim().deaths() > 0 ? ", died " + std::to_string(session.sim().deaths()) + "x" : std::string()));
     const auto& w = session.sim().weapon();
     hs.magazine = w.magazine;
     hs.magazineSize = w.magazineSize;
@@ -243,6 +251,9 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     smokeUploaded_ = smoke.version();
     decals_->update(session.decals().list(), session.decals().version());
     frame_->update(static_cast<float>(smoke.seconds()));
+    // The liquids' warp runs on simulation time (replays draw the same frames); the camera's
+    // liquid, if any, tints and fogs the view.
+    render::setLiquidView(static_cast<double>(session.sim().tick()) * session.sim().dt(), liquids_.at(eye_));
     root_.renderOneFrame();
 }
 

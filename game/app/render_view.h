@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "map/liquid.h"
 #include "settings.h"
 #include "sim/sim_events.h"
 
@@ -108,6 +109,7 @@ private:
     Ogre::Viewport* viewport_ = nullptr;
     Ogre::TexturePtr offscreen_;  // headless render target
     Vec3 eye_;
+    map::LiquidQuery liquids_;  // where the camera is under water, slime or lava (the tint and fog)
     std::unique_ptr<render::LevelMaterials> materials_;
     std::unique_ptr<render::LevelGeometry> levelGeometry_;
     std::unique_ptr<render::PropView> props_;

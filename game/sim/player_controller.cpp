@@ -81,9 +81,10 @@ Vec3 alongPlane(const Vec3& v, const Vec3& n) {
 }
 }  // namespace
 
-PlayerController::PlayerController(PhysicsWorld& world, PlayerTuning tuning)
+PlayerController::PlayerController(PhysicsWorld& world, PlayerTuning tuning, SwimTuning swim)
     : world_(world),
       tuning_(tuning),
+      swim_(swim),
       // btCapsuleShape takes the cylinder part's height: total minus both caps.
       standShape_(static_cast<btScalar>(tuning.radius), static_cast<btScalar>(tuning.standHeight - 2 * tuning.radius)),
       crouchShape_(static_cast<btScalar>(tuning.radius), static_cast<btScalar>(tuning.crouchHeight - 2 * tuning.radius)),
@@ -272,6 +273,13 @@ void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double 
 
     Move m;
     m.centre = depenetrate(b, s.feet + kUp * (b.height / 2));
+    // In a liquid up to the waist, or jumping out of one: swimming (the section at the end).
+    s.feet = m.centre - kUp * (b.height / 2);
+    updateWaterLevel(s);
+    if (s.waterJumpTime > 0 || s.waterLevel >= 2) {
+        waterMove(b, s, cmd, dt, m);
+        return;
+    }
     const Ground ground = findGround(b, m.centre, kGroundProbe);
     bool onGround = ground.walkable && dot(s.velocity, ground.normal) <= kLeaveGroundSpeed;
 
@@ -282,7 +290,7 @@ void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double 
     const double wishLen = std::min(length(wish), 1.0);
     const Vec3 flatWishDir = normalize(wish);
     const double maxSpeed = s.crouching ? t.crouchSpeed : t.walkSpeed * (cmd.sprint ? t.sprintMultiplier : 1.0);
-    const double wishSpeed = wishLen * maxSpeed;
+    const double wishSpeed = wishLen * maxSpeed * wadeScale(s.waterLevel);
 
     Vec3 vel = s.velocity;
     bool jumped = false;
@@ -291,6 +299,7 @@ void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double 
         const double speed = length(horizontal(vel));
         if (speed > 1e-9) vel *= std::max(speed - std::max(speed, t.stopSpeed) * t.friction * dt, 0.0) / speed;
         else vel = Vec3{};
+        applyWaterFriction(vel, s.waterLevel, dt);  // wading
         const Vec3 wishDir = normalize(flatWishDir - ground.normal * dot(flatWishDir, ground.normal));
         accelerate(vel, wishDir, wishSpeed, t.groundAccel, dt);
         vel = alongPlane(vel, ground.normal);
@@ -300,6 +309,7 @@ void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double 
             jumped = true;
         }
     } else {
+        applyWaterFriction(vel, s.waterLevel, dt);
         accelerate(vel, flatWishDir, wishSpeed, t.airAccel, dt);
     }
     m.vel = m.moveVel = vel;
@@ -338,6 +348,101 @@ void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double 
     s.velocity = m.vel;
     s.feet = m.centre - kUp * (b.height / 2);
     pushBodies(m.contacts, flatWishDir, wishSpeed, dt);
+}
+
+// ---- Swimming -----------------------------------------------------------------------------
+// Quake III's PM_SetWaterLevel, PM_WaterMove, PM_CheckWaterJump and PM_WaterJumpMove (bg_pmove.c)
+// and Quake's SV_WaterMove / SV_WaterJump (sv_user.c), on this controller's sweeps. Tuning in
+// SwimTuning (player_controller.h).
+
+namespace {
+// The feet's probe sits this far above the capsule's bottom (Quake III's "mins + 1 unit"): a player
+// standing on a pool's rim level with the surface is not wading.
+constexpr double kFeetProbe = 0.03;
+}  // namespace
+
+int PlayerController::waterLevel(const Vec3& feet, double height, const Vec3& eye, map::LiquidKind* kind) const {
+    if (kind) *kind = map::LiquidKind::None;
+    if (!liquids_ || liquids_->empty()) return 0;
+    const map::LiquidKind atFeet = liquids_->at(feet + kUp * kFeetProbe);
+    if (atFeet == map::LiquidKind::None) return 0;
+    if (kind) *kind = atFeet;
+    // Waist: half the body (Quake III samples half the view height, 25 of 56 units).
+    if (liquids_->at(feet + kUp * (height / 2)) == map::LiquidKind::None) return 1;
+    return liquids_->at(eye) == map::LiquidKind::None ? 2 : 3;
+}
+
+void PlayerController::updateWaterLevel(PlayerState& s) const {
+    map::LiquidKind kind = map::LiquidKind::None;
+    s.waterLevel = waterLevel(s.feet, s.height, s.eye(), &kind);
+    s.liquid = kind;
+}
+
+double PlayerController::wadeScale(int level) const {
+    return 1.0 - (1.0 - swim_.swimScale) * std::clamp(level, 0, 3) / 3.0;
+}
+
+void PlayerController::applyWaterFriction(Vec3& vel, int level, double dt) const {
+    if (level <= 0) return;
+    const double speed = length(vel);
+    if (speed < 1e-9) return;
+    vel *= std::max(speed - speed * swim_.waterFriction * level * dt, 0.0) / speed;
+}
+
+bool PlayerController::checkWaterJump(const Body& b, const PlayerState& s, const Vec3& flatForward) const {
+    if (s.waterLevel != 2) return false;
+    const double reach = tuning_.radius + swim_.waterJumpReach;
+    const Vec3 waist = s.feet + kUp * (b.height / 2);
+    if (!world_.rayCast(waist, waist + flatForward * reach)) return false;  // no edge ahead
+    const Vec3 high = waist + kUp * swim_.waterJumpClearance;
+    return !world_.rayCast(high, high + flatForward * reach);  // and room above it
+}
+
+void PlayerController::waterMove(const Body& b, PlayerState& s, const PlayerCommand& cmd, double dt, Move& m) const {
+    const double sy = std::sin(static_cast<double>(s.yaw)), cy = std::cos(static_cast<double>(s.yaw));
+    const double sp = std::sin(static_cast<double>(s.pitch)), cp = std::cos(static_cast<double>(s.pitch));
+    const Vec3 flatForward{-sy, 0, -cy}, right{cy, 0, -sy};
+    const Vec3 forward{-sy * cp, sp, -cy * cp};  // swimming goes where the eye looks
+    Vec3 vel = s.velocity;
+
+    if (s.waterJumpTime <= 0 && cmd.forward > 0 && cmd.jump && checkWaterJump(b, s, flatForward)) {
+        vel.y = swim_.waterJumpUp;
+        s.waterJumpTime = static_cast<float>(swim_.waterJumpMaxTime);
+    }
+    if (s.waterJumpTime > 0) {
+        // Out of the water: no control, the forward push kept every tick (Quake's SV_WaterJump)
+        // while the wall clips it, gravity as in the air; over once it starts falling.
+        const Vec3 push = flatForward * swim_.waterJumpForward;
+        m.vel.x = push.x;
+        m.vel.z = push.z;
+        m.vel.y = std::max(vel.y - tuning_.gravity * dt, -tuning_.maxFallSpeed);
+        m.moveVel = {push.x, 0.5 * (vel.y + m.vel.y), push.z};
+        s.waterJumpTime = static_cast<float>(s.waterJumpTime - dt);
+        if (m.vel.y < 0 || s.waterJumpTime <= 0) s.waterJumpTime = 0;
+    } else {
+        applyWaterFriction(vel, s.waterLevel, dt);
+        // Wished velocity: the look direction and strafe, jump up, crouch down; idle: sink.
+        Vec3 wish = forward * cmd.forward + right * cmd.right;
+        if (cmd.jump) wish.y += 1;
+        if (cmd.crouch) wish.y -= 1;
+        const double maxSpeed = tuning_.walkSpeed * (cmd.sprint ? tuning_.sprintMultiplier : 1.0);
+        const double wishLen = std::min(length(wish), 1.0);
+        const Vec3 wishVel = wishLen > 1e-9 ? normalize(wish) * (wishLen * maxSpeed) : Vec3{0, -swim_.sinkFraction * tuning_.walkSpeed, 0};
+        const double wishSpeed = std::min(length(wishVel), maxSpeed * swim_.swimScale);
+        accelerate(vel, normalize(wishVel), wishSpeed, swim_.waterAccel, dt);
+        m.vel = m.moveVel = vel;  // no gravity: the water holds the player up
+    }
+    // Standing on the bottom, steps still climb (a pool's stairs lead out of it).
+    const bool grounded = s.waterJumpTime <= 0 && findGround(b, m.centre, kGroundProbe).walkable;
+    const Move start = m;
+    move(b, dt, false, m);
+    if (grounded && m.hitWall) stepUp(b, dt, start, m);
+    const Ground below = findGround(b, m.centre, kGroundProbe);
+    s.onGround = below.walkable && dot(m.vel, below.normal) <= kLeaveGroundSpeed;
+    if (s.onGround && m.vel.y < 0) m.vel.y = 0;  // resting on the pool's floor
+    s.velocity = m.vel;
+    s.feet = m.centre - kUp * (b.height / 2);
+    pushBodies(m.contacts, normalize(horizontal(m.moveVel)), length(horizontal(m.moveVel)), dt);
 }
 
 }  // namespace obscura::sim

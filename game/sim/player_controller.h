@@ -10,6 +10,7 @@
 #pragma once
 
 #include "core/vec3.h"
+#include "map/liquid.h"
 #include "sim/physics_world.h"
 
 #include <vector>
@@ -57,6 +58,28 @@ struct PlayerTuning {
     double pushForce = 600;
 };
 
+// Swimming (the last section of player_controller.cpp), after Quake III's PM_WaterMove / PM_CheckWaterJump (bg_pmove.c) and
+// Quake's SV_WaterMove (sv_user.c). Kept apart from PlayerTuning so the ground constants can change
+// without touching these.
+struct SwimTuning {
+    // Quake's swim speed is 0.7 of the run speed (SV_WaterMove's `wishspeed *= 0.7`); wading
+    // (feet in) scales down towards it by the water level as Quake III does: 1 - 0.3 x level / 3.
+    double swimScale = 0.7;
+    double waterAccel = 4;     // Quake III's pm_wateraccelerate
+    double waterFriction = 1;  // Quake III's pm_waterfriction, x the water level (1..3)
+    // Idle in water the player drifts down at Quake's 60 u/s of its 320 u/s run: 0.19 of the walk
+    // speed, 0.94 m/s here.
+    double sinkFraction = 60.0 / 320.0;
+    // Jumping out at an edge (PM_CheckWaterJump): waist in, a wall ahead within reach at the
+    // waist, nothing ahead half a metre higher: out at 3.1 m/s forward (Quake III's 200 of 320
+    // u/s) and 7.7 m/s up, an apex of 1.5 m: the feet, 0.9 m below the surface, clear a rim 0.25 m
+    // above it with room. Reach: Quake III looks 30 units from the centre, 14 beyond its 16-unit
+    // half-width: 0.45 m beyond the capsule. The jump's control lock ends when it starts to fall
+    // or after Quake III's 2 s.
+    double waterJumpForward = 3.1, waterJumpUp = 7.7;
+    double waterJumpReach = 0.45, waterJumpClearance = 0.5, waterJumpMaxTime = 2.0;
+};
+
 struct PlayerState {
     Vec3 feet;      // bottom of the capsule, metres
     Vec3 velocity;  // m/s
@@ -64,12 +87,17 @@ struct PlayerState {
     bool onGround = false, crouching = false;
     float height = 1.8f;        // current capsule height
     float eyeBelowTop = 0.15f;  // from the tuning, so eye() needs no controller
+    // Liquids (Quake's waterlevel): 0 dry, 1 feet in, 2 waist in (swimming), 3 eyes under.
+    int waterLevel = 0;
+    map::LiquidKind liquid = map::LiquidKind::None;  // the liquid at the feet (the worst one)
+    float waterJumpTime = 0;  // > 0: jumping out of the water at an edge, no control (seconds left)
+    int health = 100;         // slime and lava take it (Simulation); at 0 the player respawns
     Vec3 eye() const { return feet + Vec3{0, static_cast<double>(height - eyeBelowTop), 0}; }
 };
 
 class PlayerController {
 public:
-    explicit PlayerController(PhysicsWorld& world, PlayerTuning tuning = {});
+    explicit PlayerController(PhysicsWorld& world, PlayerTuning tuning = {}, SwimTuning swim = {});
     PlayerController(const PlayerController&) = delete;
     PlayerController& operator=(const PlayerController&) = delete;
 
@@ -78,6 +106,12 @@ public:
     PlayerState spawn(const Vec3& feet, double yaw, double pitch) const;
     // One fixed tick. Pushes crates it walks into (impulses on the world's bodies).
     void step(PlayerState& s, const PlayerCommand& cmd, double dt);
+    // The level's liquids (none by default); must outlive the controller.
+    void setLiquids(const map::LiquidQuery* liquids) { liquids_ = liquids; }
+    const SwimTuning& swimTuning() const { return swim_; }
+    // Quake's waterlevel of a body standing at `feet`, `height` tall with its eye at `eye`, and the
+    // liquid there.
+    int waterLevel(const Vec3& feet, double height, const Vec3& eye, map::LiquidKind* kind) const;
 
 private:
     struct Body {
@@ -109,9 +143,17 @@ private:
     void move(const Body& b, double dt, bool grounded, Move& m) const;
     bool stepUp(const Body& b, double dt, const Move& start, Move& result) const;
     void pushBodies(const std::vector<Contact>& contacts, const Vec3& wishDir, double wishSpeed, double dt) const;
+    // Swimming (the last section of player_controller.cpp).
+    void updateWaterLevel(PlayerState& s) const;
+    bool checkWaterJump(const Body& b, const PlayerState& s, const Vec3& flatForward) const;
+    void waterMove(const Body& b, PlayerState& s, const PlayerCommand& cmd, double dt, Move& m) const;
+    double wadeScale(int waterLevel) const;  // the wish speed's scale, 1 when dry
+    void applyWaterFriction(Vec3& vel, int waterLevel, double dt) const;
 
     PhysicsWorld& world_;
     PlayerTuning tuning_;
+    SwimTuning swim_;
+    const map::LiquidQuery* liquids_ = nullptr;
     btCapsuleShape standShape_, crouchShape_;
     double minWalkNormalY_;
 };

@@ -11,6 +11,11 @@ namespace {
 // 10..1000 Hz: below 10 a tick is a visible stutter and one tick's fall outruns the sub-step
 // cap; above 1000 the float sweeps resolve less than a tick's motion.
 constexpr double kMinTickRate = 10, kMaxTickRate = 1000;
+// Liquid damage as Quake's WaterMove (client.qc): lava 10 x waterlevel every 0.2 s, slime 4 x
+// waterlevel every second (the first hit at once); water none (no drowning here).
+constexpr int kLavaDamagePerLevel = 10, kSlimeDamagePerLevel = 4;
+constexpr double kLavaDamageInterval = 0.2, kSlimeDamageInterval = 1.0;
+constexpr int kPlayerHealth = 100;  // Quake's
 }  // namespace
 
 Simulation::Simulation(const map::Level& level, const SimConfig& config, const std::vector<TriangleMesh>& modelMeshes)
@@ -22,17 +27,42 @@ Simulation::Simulation(const map::Level& level, const SimConfig& config, const s
     physics_->addLevel(level);
     for (const auto& m : modelMeshes) physics_->addStaticTriangleMesh(m);
     controller_ = std::make_unique<PlayerController>(*physics_, tuning);
+    liquids_ = map::LiquidQuery(level);
+    controller_->setLiquids(&liquids_);
     combat_ = std::make_unique<Combat>(level, *physics_, config.tickRate);
-    if (config.overrideStart)
-        player_ = controller_->spawn(config.startFeet, config.startYaw, config.startPitch);
-    else
-        player_ = controller_->spawn(level.hasPlayerStart ? level.playerStart : Vec3{}, level.hasPlayerStart ? level.playerStartYaw : 0.0, 0.0);
+    if (config.overrideStart) {
+        startFeet_ = config.startFeet;
+        startYaw_ = config.startYaw;
+        startPitch_ = config.startPitch;
+    } else {
+        startFeet_ = level.hasPlayerStart ? level.playerStart : Vec3{};
+        startYaw_ = level.hasPlayerStart ? level.playerStartYaw : 0.0;
+    }
+    player_ = controller_->spawn(startFeet_, startYaw_, startPitch_);
+    player_.health = kPlayerHealth;
+}
+
+void Simulation::applyLiquidDamage() {
+    const bool lava = player_.liquid == map::LiquidKind::Lava, slime = player_.liquid == map::LiquidKind::Slime;
+    if ((!lava && !slime) || player_.waterLevel <= 0 || tick_ < nextLiquidDamageTick_) return;
+    const int damage = (lava ? kLavaDamagePerLevel : kSlimeDamagePerLevel) * player_.waterLevel;
+    const double interval = lava ? kLavaDamageInterval : kSlimeDamageInterval;
+    nextLiquidDamageTick_ = tick_ + static_cast<std::uint64_t>(std::llround(interval * config_.tickRate));
+    player_.health -= damage;
+    liquidDamage_ += damage;
+    if (player_.health <= 0) {
+        // Dead: back to the start, whole (no death sequence yet).
+        ++deaths_;
+        player_ = controller_->spawn(startFeet_, startYaw_, startPitch_);
+        player_.health = kPlayerHealth;
+    }
 }
 
 void Simulation::step(const PlayerCommand& cmd) {
     events_.clear();
     const PlayerState before = player_;
     controller_->step(player_, cmd, dt());
+    applyLiquidDamage();
     physics_->step(dt());
     combat_->step(cmd, player_, before, rng_, events_);
     ++tick_;
@@ -61,6 +91,13 @@ std::uint64_t Simulation::stateHash() const {
     h.add(p.onGround);
     h.add(p.crouching);
     h.add(p.height);
+    h.add(p.waterLevel);
+    h.add(static_cast<int>(p.liquid));
+    h.add(p.waterJumpTime);
+    h.add(p.health);
+    h.add(nextLiquidDamageTick_);
+    h.add(liquidDamage_);
+    h.add(deaths_);
     for (std::size_t i = 0; i < physics_->dynamicBodyCount(); ++i) {
         const btRigidBody& b = physics_->dynamicBody(i);
         const btTransform& t = b.getWorldTransform();

@@ -6,6 +6,7 @@
 #include "core/rng.h"
 #include "core/triangle_mesh.h"
 #include "map/level.h"
+#include "map/liquid.h"
 #include "sim/combat.h"
 #include "sim/physics_world.h"
 #include "sim/player_controller.h"
@@ -60,12 +61,20 @@ public:
     double throwCharge() const { return combat_->throwCharge(); }
     std::vector<GrenadeState> grenades() const { return combat_->grenades(); }
 
+    // Liquids (map/liquid.h): the level's volumes; what slime and lava did to the player.
+    const map::LiquidQuery& liquids() const { return liquids_; }
+    int liquidDamage() const { return liquidDamage_; }  // health taken by slime and lava so far
+    int deaths() const { return deaths_; }              // times the player died and respawned
+
     // Hash of everything that evolves: tick, player, every dynamic body, the RNG.
     std::uint64_t stateHash() const;
     std::string stateHashHex() const;
 
 private:
+    void applyLiquidDamage();
+
     SimConfig config_;
+    map::LiquidQuery liquids_;  // before controller_, which points at it
     std::unique_ptr<PhysicsWorld> physics_;
     std::unique_ptr<PlayerController> controller_;
     std::unique_ptr<Combat> combat_;
@@ -73,6 +82,10 @@ private:
     PlayerState player_;
     Rng rng_;
     std::uint64_t tick_ = 0;
+    Vec3 startFeet_;                  // where a dead player respawns
+    double startYaw_ = 0, startPitch_ = 0;
+    std::uint64_t nextLiquidDamageTick_ = 0;  // Quake's dmgtime, in ticks
+    int liquidDamage_ = 0, deaths_ = 0;
 };
 
 }  // namespace obscura::sim

@@ -33,6 +33,25 @@ inline map::LevelBrush ramp(double x0, double x1, double z0, double run, double 
     return b;
 }
 
+// A liquid box with its six faces (the liquid query reads their planes; physics ignores it).
+inline map::LevelBrush liquidBox(Vec3 min, Vec3 max, map::LiquidKind kind = map::LiquidKind::Water) {
+    map::LevelBrush b = box(min, max);
+    b.solid = false;
+    b.liquid = kind;
+    const Vec3 normals[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+    for (int i = 0; i < 6; ++i) {
+        map::LevelPolygon f;
+        f.normal = normals[i];
+        f.texture = "*water1";
+        map::LevelVertex v;
+        v.position = i % 2 == 0 ? min : max;  // a point on the face's plane
+        v.normal = f.normal;
+        f.vertices.push_back(v);
+        b.faces.push_back(f);
+    }
+    return b;
+}
+
 // A 40 x 40 m floor slab whose top is at y = 0, the player at the origin facing -Z.
 inline map::Level floorLevel() {
     map::Level l;
