@@ -45,7 +45,7 @@ LiquidKind liquidKindOfTexture(const std::string& texture) {
     return LiquidKind::Water;
 }
 
-LiquidKind liquidKindOfContents(int q2Contents) {
+LiquidKind liquidKindOfContents(std::uint32_t q2Contents) {
     if (q2Contents & kQ2ContentsLava) return LiquidKind::Lava;
     if (q2Contents & kQ2ContentsSlime) return LiquidKind::Slime;
     if (q2Contents & kQ2ContentsWater) return LiquidKind::Water;

@@ -18,19 +18,20 @@
 #pragma once
 
 #include "map/level.h"
+#include "map/surface_rules.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace obscura::map {
 
-// Quake 2 content and surface flag bits (qfiles.h).
-constexpr int kQ2ContentsLava = 8, kQ2ContentsSlime = 16, kQ2ContentsWater = 32;
-constexpr int kQ2SurfTrans33 = 0x10, kQ2SurfTrans66 = 0x20;
+// Quake 2 content bits (qfiles.h); the surface flags (TRANS33/66 among them) are in surface_rules.h.
+constexpr std::uint32_t kQ2ContentsLava = 8, kQ2ContentsSlime = 16, kQ2ContentsWater = 32;
 
 LiquidKind liquidKindOfTexture(const std::string& texture);  // None unless it starts with '*'
-LiquidKind liquidKindOfContents(int q2Contents);             // None without a liquid bit
+LiquidKind liquidKindOfContents(std::uint32_t q2Contents);             // None without a liquid bit
 bool isLiquidSkipTexture(const std::string& texture);        // *waterskip, *slimeskip, *lavaskip, *teleskip, *skip
 const char* liquidName(LiquidKind kind);                     // "water", "slime", ... ("none")
 // Which of two overlapping liquids counts: lava 4, slime 3, water 2, teleporter 1, none 0.
