@@ -34,8 +34,8 @@ views=(
   "wall_off_screen|$arena|43 1.65 -30 90 -35"             # the 12 m east wall right behind the camera
   "wall_off_side|$arena|42.8 1.65 -27 45 -20"             # the east wall just past the right edge
   "crouch_cover|$arena|32 1.65 -25.6 0 -15|crouch"        # crouched 2.4 m from the 1.125 m cover wall
-  "crouch_crates|$arena|8 1.65 -27 90 -5|crouch"          # crouched in room A, by its crates
-  "room_a|$arena|15.2 1.65 -22.8 45 10"                   # closed room A (4 m ceiling), corner to corner
+  "crouch_stairs|$arena|9 1.65 -39.2 -45 0|crouch"        # crouched in room B: the stairs, the mezzanine's underside
+  "room_a|$arena|12 1.65 -22.8 0 10"                      # closed room A (4 m ceiling), from its south wall
   "room_b|$arena|8.5 1.65 -38.8 -10 15"                   # room B (6 m ceiling), the mezzanine and stairs
   "floor_down|$arena|32 1.65 -30 0 -70"                   # open courtyard floor, looking down: nothing occluded
   "e3m4_start|$e3m4|30 46.15 10.5 0 -10"                  # the first corridor
@@ -45,6 +45,7 @@ views=(
   "sibenik_nave|$sibenik|0 1.65 0 90 0"
   "sibenik_pillars|$sibenik|0 1.65 0 -90 -10"
 )
+# (No crates, barrels or targets in view: the reference traces brushes and misc_models only.)
 # name | game arguments. The order is bench/timedemo_ao.replay's segment order after `off`.
 configs=(
   "crytek|--ssao crytek"
@@ -72,9 +73,18 @@ render() {
 image() { if [ "$3" = "$RL" ]; then echo "$out/${1}_$2.png"; else echo "$out/${1}_$2_r$3.png"; fi; }
 
 results="$out/results.tsv"
-printf 'view\ttruth_radius\tmode_radius\tconfig\tmae\trmse\tbias\tpixels\toccluded_mae\toccluded_bias\toccluded_pixels\toccluded_share\n' > "$results"
 ran_views=() ran_configs=()
 for c in "${configs[@]}"; do picked "${c%%|*}" "${CONFIGS:-}" && ran_configs+=("$c"); done
+# A filtered run replaces its own rows of the last results (its views' `off` and its configurations)
+# and keeps the rest, so the table can be brought up to date a few views at a time.
+if [ -n "${VIEWS:-}${CONFIGS:-}" ] && [ -f "$results" ]; then
+  keep=$(awk -F'\t' -v views="${VIEWS:-}" -v configs="$(for c in "${ran_configs[@]}"; do printf '%s ' "${c%%|*}"; done)" '
+    BEGIN { gsub(",", " ", views); nv = split(views, v, " "); for (i in v) V[v[i]]; split(configs, c, " "); for (i in c) C[c[i]]; C["off"] }
+    NR == 1 || !((nv == 0 || $1 in V) && $4 in C)' "$results")
+  printf '%s\n' "$keep" > "$results"
+else
+  printf 'view\ttruth_radius\tmode_radius\tconfig\tmae\trmse\tbias\tpixels\toccluded_mae\toccluded_bias\toccluded_pixels\toccluded_share\n' > "$results"
+fi
 for v in "${views[@]}"; do
   IFS='|' read -r name level pose crouch <<<"$v"
   picked "$name" "${VIEWS:-}" || continue
@@ -118,7 +128,8 @@ done
 
 table="$out/table.md"
 /usr/bin/python3 tools/aoref/ao_table_format.py "$results" --local "$RL" --large "$RG" --intensity "$I" --rays "$RAYS" \
-  --configs "$(for c in "${ran_configs[@]}"; do printf '%s ' "${c%%|*}"; done)" > "$table"
+  --views "$(for v in "${views[@]}"; do printf '%s ' "${v%%|*}"; done)" \
+  --configs "$(for c in "${configs[@]}"; do printf '%s ' "${c%%|*}"; done)" > "$table"
 
 if [ -z "${NO_COST:-}" ]; then
   "$game" --headless --timedemo bench/timedemo_ao.replay > "$out/timedemo_ao.txt"

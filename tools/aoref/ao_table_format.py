@@ -5,7 +5,9 @@ engine_ext/ssao/README.md. The figures are computed in C++ (tools/aoref/ao_compa
 averages them over the views, divides off's occluded-region MAE by each mode's, and checks the
 issue-14 goal (occluded-region MAE at least 3x lower than off on every view at the local radius, at
 least 2x lower at the large-scale radius).
-Usage: ao_table_format.py results.tsv --local 0.6 --large 2 --configs "crytek horizon ..." [--intensity 2] [--rays 256]
+Usage: ao_table_format.py results.tsv --local 0.6 --large 2 --views "courtyard ..." --configs "crytek horizon ..."
+       [--intensity 2] [--rays 256]
+The views and configurations are printed in the order given, those without results left out.
 """
 import argparse
 import csv
@@ -94,12 +96,14 @@ def main():
     ap.add_argument("results")
     ap.add_argument("--local", required=True)
     ap.add_argument("--large", required=True)
+    ap.add_argument("--views", required=True)
     ap.add_argument("--configs", required=True)
     ap.add_argument("--intensity", default="2")
     ap.add_argument("--rays", default="256")
     a = ap.parse_args()
-    rows, views = load(a.results)
-    configs = a.configs.split()
+    rows, seen = load(a.results)
+    views = [v for v in a.views.split() if v in seen]
+    configs = [c for c in a.configs.split() if any(k[3] == c for k in rows)]
     print(f"320×180, reference {a.rays} rays/pixel; intensity {a.intensity}, 16 samples at quarter resolution unless "
           f"named. Each cell: **whole-frame MAE / occluded-region MAE / occluded-region bias** (mode − reference; + is too "
           f"light). The occluded region: pixels whose reference AO < 0.95 (their share of the pixels that see geometry "
