@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# The AO error/cost table, one command: for each view, the ray-traced reference (obscura_aoref, 256
-# rays/pixel) against each AO configuration's AO-only frame from the game (same pose, 320x180, no
-# HUD), as mean absolute error, RMSE and bias (mode - reference); then every configuration's frame
-# time at 1280x720 from one timedemo run (bench/timedemo_ao.replay: one view, the configurations
-# one after another, so their costs over `off` compare on the same frame). Images and the tables
-# land in build/ao_table/ (table.md).
+# The AO error/cost table, one command. For each view, the ray-traced reference (obscura_aoref,
+# 256 rays/pixel, 320x180) against each AO configuration's AO-only frame from the game (same pose,
+# no HUD) and against `off` (an all-white frame, scored by the same code), as whole-frame MAE, and
+# MAE and bias (mode - reference) over the occluded region (reference < 0.95: aoref/ao_compare.h).
+# Two truths: the local radius (LOCAL_RADIUS, 0.6 m: the game's default --ssao-radius) and a
+# large-scale one (LARGE_RADIUS, 2 m). Against the large-scale truth the modes are scored twice: at
+# their default radius (the frame the game really shows) and with --ssao-radius set to it.
+# Then every configuration's frame time at 1280x720 from one timedemo run
+# (bench/timedemo_ao.replay). Images, results.tsv and the tables land in build/ao_table/ (table.md).
 # Usage: xvfb-run -a -s "-screen 0 1920x1080x24" tools/aoref/ao_table.sh   (after scripts/build.sh)
-#        RADIUS=, INTENSITY= in the environment change the knobs; NO_COST=1 skips the timedemo.
+#        VIEWS="courtyard sibenik_nave" / CONFIGS="horizon cone" run a subset (names below);
+#        LOCAL_RADIUS=, LARGE_RADIUS=, INTENSITY=, RAYS= change the knobs; NO_COST=1 skips the timedemo.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 game=build/game/obscura
@@ -14,18 +18,34 @@ ref=build/tools/aoref/obscura_aoref
 out=build/ao_table
 mkdir -p "$out"
 export XDG_CACHE_HOME="$(pwd)/build/cache"
-W=320; H=180; R=${RADIUS:-0.6}; I=${INTENSITY:-2}
-# name | level | eye "x y z yaw pitch" (metres, degrees). Views chosen to hurt screen-space AO.
+W=320; H=180; I=${INTENSITY:-2}; RAYS=${RAYS:-256}
+RL=${LOCAL_RADIUS:-0.6}; RG=${LARGE_RADIUS:-2}
+arena=media/levels/arena.map e3m4=../shared/maps/librequake/e3m4.map sibenik=tests/ssao/views/sibenik.map
+# name | level | eye "x y z yaw pitch" (world metres, degrees; yaw 0 faces -z, 90 faces -x; the arena's
+# map (x, y, z) is world (x, z, -y)) | crouch: the pose is a standing one and the player crouches (a
+# replay holding lctrl: the eye drops to 0.956 m; --start-pose alone cannot put the eye that low, the
+# standing player is pushed out of the floor). Views chosen to hurt screen-space AO.
 views=(
-  "courtyard|media/levels/arena.map|26 1.65 -24 -30 -10"
-  "pillars|media/levels/arena.map|25 1.65 -32 0 -15"
-  "low_angle|media/levels/arena.map|32 1.65 -22 0 -2"
-  "wall_off_screen|media/levels/arena.map|43 1.65 -30 90 -35"
-  "e3m4_start|../shared/maps/librequake/e3m4.map|30 46.15 10.5 0 -10"
-  "e3m4_corridor|../shared/maps/librequake/e3m4.map|30 46.15 5 30 -20"
-  "sibenik_nave|tests/ssao/views/sibenik.map|0 1.65 0 90 0"
-  "sibenik_pillars|tests/ssao/views/sibenik.map|0 1.65 0 -90 -10"
+  "courtyard|$arena|26 1.65 -24 -30 -10"                  # the open courtyard towards the pillars and the north wall
+  "pillars|$arena|25 1.65 -32 0 -15"                      # four 0.25 m pillars, 5 m tall, 4 m ahead
+  "pillars_close|$arena|24.6 1.65 -34.6 10 -25"           # the pillars' feet from 1.5 m
+  "low_angle|$arena|32 1.65 -22 0 -2"                     # along the courtyard floor, nearly level
+  "low_eye_tall_wall|$arena|43.3 1.65 -21 0 0|crouch"     # eye 0.96 m, 0.7 m from the 12 m east wall, along it
+  "wall_off_screen|$arena|43 1.65 -30 90 -35"             # the 12 m east wall right behind the camera
+  "wall_off_side|$arena|42.8 1.65 -27 45 -20"             # the east wall just past the right edge
+  "crouch_cover|$arena|32 1.65 -25.6 0 -15|crouch"        # crouched 2.4 m from the 1.125 m cover wall
+  "crouch_stairs|$arena|9 1.65 -39.2 -45 0|crouch"        # crouched in room B: the stairs, the mezzanine's underside
+  "room_a|$arena|12 1.65 -22.8 0 10"                      # closed room A (4 m ceiling), from its south wall
+  "room_b|$arena|8.5 1.65 -38.8 -10 15"                   # room B (6 m ceiling), the mezzanine and stairs
+  "floor_down|$arena|32 1.65 -30 0 -70"                   # open courtyard floor, looking down: nothing occluded
+  "e3m4_start|$e3m4|30 46.15 10.5 0 -10"                  # the first corridor
+  "e3m4_corridor|$e3m4|30 46.15 5 30 -20"                 # its corner and steps
+  "e3m4_room_west|$e3m4|-53 30.15 -68.5 -90 -5"           # a room: purple floor, ceiling, a pillar
+  "e3m4_room_east|$e3m4|64 17.65 -69 -90 -5"              # a room: ceiling beams, a doorway
+  "sibenik_nave|$sibenik|0 1.65 0 90 0"
+  "sibenik_pillars|$sibenik|0 1.65 0 -90 -10"
 )
+# (No crates, barrels or targets in view: the reference traces brushes and misc_models only.)
 # name | game arguments. The order is bench/timedemo_ao.replay's segment order after `off`.
 configs=(
   "crytek|--ssao crytek"
@@ -36,43 +56,80 @@ configs=(
   "horizon-half|--ssao horizon --ssao-resolution half"
   "hemisphere-full-32|--ssao hemisphere --ssao-resolution full --ssao-samples 32"
 )
+# VIEWS= / CONFIGS= filters: names separated by spaces or commas.
+picked() { [ -z "$2" ] || [[ " ${2//,/ } " == *" $1 "* ]]; }
+# render NAME LEVEL POSE CROUCH PNG ARGS...: the game's frame of a view; prints where the camera was.
+render() {
+  local name=$1 level=$2 pose=$3 crouch=$4 png=$5; shift 5
+  if [ "$crouch" = crouch ]; then
+    printf 'obscura-replay 1\nlevel %s\nseed 1\nresolution %s %s\nstart %s\n0 key lctrl down\n20 end\n' \
+      "$level" $W $H "$pose" > "$out/$name.replay"
+    "$game" --replay "$out/$name.replay" --hud off "$@" --screenshot "$png"
+  else
+    "$game" --headless --ticks 1 --width $W --height $H --level "$level" --start-pose "$pose" --hud off "$@" --screenshot "$png"
+  fi | sed -n 's/^camera-pose //p'
+}
+# The image of configuration $2 at mode radius $3 in view $1 (no suffix at the local radius).
+image() { if [ "$3" = "$RL" ]; then echo "$out/${1}_$2.png"; else echo "$out/${1}_$2_r$3.png"; fi; }
 
-declare -A sumMae sumRmse sumBias count cost
-table="$out/table.md"
-{
-  printf 'Radius %s m, intensity %s, 16 samples at quarter resolution (the defaults) unless named; MAE / RMSE / bias (mode - reference)\n\n' "$R" "$I"
-  printf '| view |'; for c in "${configs[@]}"; do printf ' %s |' "${c%%|*}"; done; printf '\n|---|'
-  for c in "${configs[@]}"; do printf -- '---|'; done; printf '\n'
-} > "$table"
+results="$out/results.tsv"
+ran_views=() ran_configs=()
+for c in "${configs[@]}"; do picked "${c%%|*}" "${CONFIGS:-}" && ran_configs+=("$c"); done
+# A filtered run replaces its own rows of the last results (its views' `off` and its configurations)
+# and keeps the rest, so the table can be brought up to date a few views at a time.
+if [ -n "${VIEWS:-}${CONFIGS:-}" ] && [ -f "$results" ]; then
+  keep=$(awk -F'\t' -v views="${VIEWS:-}" -v configs="$(for c in "${ran_configs[@]}"; do printf '%s ' "${c%%|*}"; done)" '
+    BEGIN { gsub(",", " ", views); nv = split(views, v, " "); for (i in v) V[v[i]]; split(configs, c, " "); for (i in c) C[c[i]]; C["off"] }
+    NR == 1 || !((nv == 0 || $1 in V) && $4 in C)' "$results")
+  printf '%s\n' "$keep" > "$results"
+else
+  printf 'view\ttruth_radius\tmode_radius\tconfig\tmae\trmse\tbias\tpixels\toccluded_mae\toccluded_bias\toccluded_pixels\toccluded_share\n' > "$results"
+fi
 for v in "${views[@]}"; do
-  IFS='|' read -r name level pose <<<"$v"
-  if [ ! -f "$level" ]; then echo "| $name | (no $level) |" >> "$table"; continue; fi
-  row="| $name |"
-  for c in "${configs[@]}"; do
-    IFS='|' read -r cname cargs <<<"$c"
-    # The reference is traced from where the game's camera really was (physics may nudge the player).
-    # shellcheck disable=SC2086
-    seen=$("$game" --headless --ticks 1 --width $W --height $H --level "$level" --start-pose "$pose" --hud off \
-      $cargs --ssao-radius "$R" --ssao-intensity "$I" --ao-only --screenshot "$out/${name}_$cname.png" |
-      sed -n 's/^camera-pose //p')
-    line=$("$ref" --level "$level" --pose "$seen" --width $W --height $H --radius "$R" --rays 256 \
-      --out "$out/${name}_reference.png" --compare "$out/${name}_$cname.png" 2>/dev/null)
-    read -r _ mae rmse bias _ <<<"$line"
-    mae=${mae#mae=}; rmse=${rmse#rmse=}; bias=${bias#bias=}
-    row+=$(printf ' %.3f / %.3f / %+.3f |' "$mae" "$rmse" "$bias")
-    sumMae[$cname]=$(awk "BEGIN{print ${sumMae[$cname]:-0} + $mae}")
-    sumRmse[$cname]=$(awk "BEGIN{print ${sumRmse[$cname]:-0} + $rmse}")
-    sumBias[$cname]=$(awk "BEGIN{print ${sumBias[$cname]:-0} + $bias}")
-    count[$cname]=$(( ${count[$cname]:-0} + 1 ))
+  IFS='|' read -r name level pose crouch <<<"$v"
+  picked "$name" "${VIEWS:-}" || continue
+  if [ ! -f "$level" ]; then echo "ao_table: $name: no $level, skipped" >&2; continue; fi
+  ran_views+=("$v")
+  # The game's frames at both mode radii; the reference is traced from where the game's camera
+  # really was (physics may nudge the player), once per truth radius for all of them.
+  seen=""
+  for r in $(printf '%s\n' "$RL" "$RG" | uniq); do
+    for c in "${ran_configs[@]}"; do
+      IFS='|' read -r cname cargs <<<"$c"
+      # shellcheck disable=SC2086
+      p=$(render "$name" "$level" "$pose" "$crouch" "$(image "$name" "$cname" "$r")" $cargs --ssao-radius "$r" \
+        --ssao-intensity "$I" --ao-only)
+      if [ -z "$seen" ]; then seen=$p; echo "ao_table: $name: asked '$pose', camera at '$p'" >&2
+      elif [ "$p" != "$seen" ]; then echo "ao_table: $name: $cname saw '$p', not '$seen'" >&2; exit 1; fi
+    done
   done
-  echo "$row" >> "$table"
+  for tr in $(printf '%s\n' "$RL" "$RG" | uniq); do
+    # Against the local truth: the modes at the local radius. Against the large-scale truth: the
+    # modes at the local radius (the default) and at the large one.
+    compares=() modeRadii=("$RL"); [ "$tr" = "$RL" ] || modeRadii+=("$tr")
+    for r in "${modeRadii[@]}"; do
+      for c in "${ran_configs[@]}"; do compares+=(--compare "$(image "$name" "${c%%|*}" "$r")"); done
+    done
+    refimg="$out/${name}_reference.png"; [ "$tr" = "$RL" ] || refimg="$out/${name}_reference_r$tr.png"
+    "$ref" --level "$level" --pose "$seen" --width $W --height $H --radius "$tr" --rays "$RAYS" --out "$refimg" \
+      --compare-off "${compares[@]}" 2>/dev/null | while read -r _ mae rmse bias px omae obias opx oshare file; do
+        file=${file#file=}
+        if [ "$file" = off ]; then cname=off r=-
+        else
+          base=$(basename "$file" .png); base=${base#"${name}_"}
+          case "$base" in *_r"$tr") cname=${base%_r"$tr"}; r=$tr ;; *) cname=$base; r=$RL ;; esac
+        fi
+        printf '%s\t%s\t%s\t%s' "$name" "$tr" "$r" "$cname"
+        for kv in "$mae" "$rmse" "$bias" "$px" "$omae" "$obias" "$opx" "$oshare"; do printf '\t%s' "${kv#*=}"; done
+        printf '\n'
+      done >> "$results"
+  done
 done
-row="| **mean** |"
-for c in "${configs[@]}"; do
-  n=${c%%|*}
-  row+=$(awk "BEGIN{k=${count[$n]:-1}; printf \" **%.3f / %.3f / %+.3f** |\", ${sumMae[$n]:-0}/k, ${sumRmse[$n]:-0}/k, ${sumBias[$n]:-0}/k}")
-done
-echo "$row" >> "$table"
+
+table="$out/table.md"
+/usr/bin/python3 tools/aoref/ao_table_format.py "$results" --local "$RL" --large "$RG" --intensity "$I" --rays "$RAYS" \
+  --views "$(for v in "${views[@]}"; do printf '%s ' "${v%%|*}"; done)" \
+  --configs "$(for c in "${configs[@]}"; do printf '%s ' "${c%%|*}"; done)" > "$table"
 
 if [ -z "${NO_COST:-}" ]; then
   "$game" --headless --timedemo bench/timedemo_ao.replay > "$out/timedemo_ao.txt"
@@ -98,12 +155,13 @@ fi
 cat "$table"
 
 # The side-by-side images of the modes (for the READMEs): the lit scene, each configuration's AO and
-# the ray-traced reference, in a grid of 3 columns, for the courtyard and the Sibenik nave.
-for v in "courtyard|media/levels/arena.map|26 1.65 -24 -30 -10" "sibenik_nave|tests/ssao/views/sibenik.map|0 1.65 0 90 0"; do
-  IFS='|' read -r name level pose <<<"$v"
-  [ -f "$out/${name}_reference.png" ] || continue
-  "$game" --headless --ticks 1 --width $W --height $H --level "$level" --start-pose "$pose" --hud off \
-    --screenshot "$out/${name}_scene.png" >/dev/null
+# the ray-traced reference at the local radius, in a grid of 3 columns, for the courtyard and the
+# Sibenik nave (when they and every configuration ran).
+[ ${#ran_configs[@]} -eq ${#configs[@]} ] || exit 0
+for v in "${ran_views[@]}"; do
+  IFS='|' read -r name level pose crouch <<<"$v"
+  case "$name" in courtyard | sibenik_nave) ;; *) continue ;; esac
+  render "$name" "$level" "$pose" "$crouch" "$out/${name}_scene.png" >/dev/null
   images=("$out/${name}_scene.png")
   for c in "${configs[@]}"; do images+=("$out/${name}_${c%%|*}.png"); done
   build/tools/aoref/obscura_side_by_side --columns 3 "$out/ao_modes_$name.png" "${images[@]}" "$out/${name}_reference.png"

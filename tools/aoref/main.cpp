@@ -2,10 +2,14 @@
 // written as a grey PNG, and optionally compared with the game's AO-only capture of the same view.
 //
 //   obscura_aoref --level L --pose "x y z yaw pitch" [--fov 90] [--width 320] [--height 180]
-//                 [--radius 0.6] [--rays 256] --out ref.png [--compare game_ao.png]
+//                 [--radius 0.6] [--rays 256] --out ref.png [--compare game_ao.png]... [--compare-off]
 //
 // The game side: obscura --headless --start-pose "..." --hud off --ssao MODE, AO-only view (P).
-// Prints "aoref mae=... rmse=... bias=... pixels=..." over the pixels that see geometry.
+// Prints, for each --compare image (one trace serves them all) and with --compare-off for `off` (an
+// all-white frame, scored the same way), "aoref mae=... rmse=... bias=... pixels=... occluded_mae=...
+// occluded_bias=... occluded_pixels=... occluded_share=... file=..." (aoref/ao_compare.h): over the
+// pixels that see geometry, and over those whose reference is below 0.95.
+#include "aoref/ao_compare.h"
 #include "core/image.h"
 #include "map/map_compile.h"
 #include "mesh/model_path.h"
@@ -65,7 +69,8 @@ void addModelTriangles(const map::Level& level, const std::vector<std::string>& 
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string levelPath, poseText, out, compare;
+    std::string levelPath, poseText, out;
+    std::vector<std::string> compare;
     int width = 320, height = 180, rays = 256;
     double fov = 90, radius = 0.6;
     po::options_description desc("obscura_aoref options");
@@ -74,7 +79,8 @@ int main(int argc, char** argv) {
         ("fov", po::value(&fov), "horizontal field of view, degrees (90)")("width", po::value(&width), "")
         ("height", po::value(&height), "")("radius", po::value(&radius), "AO radius, metres (0.6)")
         ("rays", po::value(&rays), "rays per pixel (256)")("out", po::value(&out)->required(), "reference PNG")
-        ("compare", po::value(&compare), "the game's AO-only capture of the same view");
+        ("compare", po::value(&compare)->composing(), "the game's AO-only capture of the same view (repeatable)")
+        ("compare-off", "also score `off`: an all-white frame");
     try {
         po::variables_map vm;
         po::store(po::parse_command_line(argc, argv, desc), vm);
@@ -101,21 +107,14 @@ int main(int argc, char** argv) {
         writePng(png, out);
         std::cerr << "aoref: " << width << "x" << height << " x " << rays << " rays in " << secs << " s\n";
 
-        if (!compare.empty()) {
-            const Image game = readPng(compare);
-            if (game.width != width || game.height != height) throw std::runtime_error(compare + ": size differs from the reference");
-            double sum = 0, sum2 = 0, bias = 0;
-            long n = 0;
-            for (std::size_t i = 0; i < img.ao.size(); ++i) {
-                if (!img.hit[i]) continue;
-                const double d = game.rgba[i * 4] / 255.0 - img.ao[i];
-                sum += std::fabs(d);
-                sum2 += d * d;
-                bias += d;
-                ++n;
-            }
-            std::cout << "aoref mae=" << (n ? sum / n : 0) << " rmse=" << (n ? std::sqrt(sum2 / n) : 0)
-                      << " bias=" << (n ? bias / n : 0) << " pixels=" << n << "\n";
+        if (vm.count("compare-off"))
+            std::cout << "aoref " << aoref::formatAoError(aoref::compareAo(img.ao, img.hit, aoref::whiteAo(img.ao.size())))
+                      << " file=off\n";
+        for (const auto& file : compare) {
+            const Image game = readPng(file);
+            if (game.width != width || game.height != height) throw std::runtime_error(file + ": size differs from the reference");
+            std::cout << "aoref " << aoref::formatAoError(aoref::compareAo(img.ao, img.hit, aoref::aoFromRgba8(game.rgba)))
+                      << " file=" << file << "\n";
         }
     } catch (const po::error& e) {
         std::cerr << "obscura_aoref: " << e.what() << "\n" << desc;
