@@ -427,7 +427,7 @@ void PlayerController::waterMove(const Body& b, PlayerState& s, const PlayerComm
         if (cmd.crouch) wish.y -= 1;
         const double maxSpeed = tuning_.walkSpeed * (cmd.sprint ? tuning_.sprintMultiplier : 1.0);
         const double wishLen = std::min(length(wish), 1.0);
-        const Vec3 wishVel = wishLen > 1e-9 ? normalize(wish) * (wishLen * maxSpeed) : Vec3{0, -swim_.sinkFraction * tuning_.walkSpeed, 0};
+        const Vec3 wishVel = wishLen > 1e-9 ? normalize(wish) * (wishLen * maxSpeed) : Vec3{0, -swim_.sinkSpeed, 0};
         const double wishSpeed = std::min(length(wishVel), maxSpeed * swim_.swimScale);
         accelerate(vel, normalize(wishVel), wishSpeed, swim_.waterAccel, dt);
         m.vel = m.moveVel = vel;  // no gravity: the water holds the player up

@@ -67,9 +67,9 @@ struct SwimTuning {
     double swimScale = 0.7;
     double waterAccel = 4;     // Quake III's pm_wateraccelerate
     double waterFriction = 1;  // Quake III's pm_waterfriction, x the water level (1..3)
-    // Idle in water the player drifts down at Quake's 60 u/s of its 320 u/s run: 0.19 of the walk
-    // speed, 0.94 m/s here.
-    double sinkFraction = 60.0 / 320.0;
+    // Idle in water the player drifts down at Quake's 60 u/s (SV_WaterMove: wishvel[2] -= 60), in
+    // the level's units like the walk: 1.875 m/s at 32 units a metre.
+    double sinkSpeed = 60.0 / 32.0;
     // Jumping out at an edge (PM_CheckWaterJump): waist in, a wall ahead within reach at the
     // waist, nothing ahead half a metre higher: out at 3.1 m/s forward (Quake III's 200 of 320
     // u/s) and 7.7 m/s up, an apex of 1.5 m: the feet, 0.9 m below the surface, clear a rim 0.25 m

@@ -55,12 +55,12 @@ TEST(Swim, WaterLevelsFollowQuake) {
 
 TEST(Swim, IdleInDeepWaterSinksSlowly) {
     Simulation s(pool(3), startAt({0, 1.0, 0}));
-    run(s, {}, 60);
-    const double sink = SwimTuning{}.sinkFraction * PlayerTuning{}.walkSpeed;  // 0.94 m/s
+    run(s, {}, 20);
+    const double sink = SwimTuning{}.sinkSpeed;  // 1.875 m/s
     EXPECT_LT(s.player().velocity.y, -0.5 * sink);  // going down...
-    EXPECT_GT(s.player().velocity.y, -1.05 * sink);  // ...no faster than the drift (a fall: 20 m/s)
-    EXPECT_GT(s.player().feet.y, 1.0 - sink);        // under a metre in a second
-    EXPECT_LT(s.player().feet.y, 1.0 - 0.3 * sink);
+    EXPECT_GT(s.player().velocity.y, -1.05 * sink);  // ...no faster than the drift (a fall: 25 m/s)
+    EXPECT_GT(s.player().feet.y, 1.0 - sink / 3);    // at most the drift's 0.625 m in a third of a second
+    EXPECT_LT(s.player().feet.y, 1.0 - 0.3 * sink / 3);
     run(s, {}, 120);  // settles on the bottom
     EXPECT_NEAR(s.player().feet.y, 0.0, 0.02);
     EXPECT_TRUE(s.player().onGround);
