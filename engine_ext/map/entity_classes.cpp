@@ -65,7 +65,11 @@ std::vector<EntityClass> makeClasses() {
                   key("_sun_mangle", T::String, "0 -90 0", "Sun direction, 'yaw pitch roll' in degrees (the default points straight down)"),
                   key("_sunlight_color", T::Colour, "1 1 1", "Sun colour, 0..255 or 0..1"),
                   key("_sunlight2", T::Float, "0", "Sky-dome fill light brightness (0 is none)"),
-                  key("_sunlight2_color", T::Colour, "1 1 1", "Sky-dome colour, 0..255 or 0..1")},
+                  key("_sunlight2_color", T::Colour, "1 1 1", "Sky-dome colour, 0..255 or 0..1"),
+                  key("_wateralpha", T::Float, "1", "Opacity of water (0..1; also 'wateralpha'): below 1 translucent"),
+                  key("_slimealpha", T::Float, "1", "Opacity of slime (0..1; also 'slimealpha'; unset: the water's)"),
+                  key("_lavaalpha", T::Float, "1", "Opacity of lava (0..1; also 'lavaalpha'; unset: the water's)"),
+                  key("_telealpha", T::Float, "1", "Opacity of teleporter liquid (0..1; also 'telealpha'; unset: the water's)")},
                  "", ""});
     // Player starts (map_compile.cpp): an unnamed info_player_start beats a named one (Quake 2's
     // level-transition starts), which beats deathmatch, which beats coop; the first of each wins.
