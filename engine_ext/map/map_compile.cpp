@@ -3,6 +3,7 @@
 
 #include "map/brush_geometry.h"
 #include "map/input_file.h"
+#include "map/map_lights.h"
 
 #include <algorithm>
 #include <cctype>
@@ -113,7 +114,7 @@ bool isInvisibleTexture(const std::string& texture) {
 bool isLiquidTexture(const std::string& texture) { return !texture.empty() && texture[0] == '*'; }
 
 namespace {
-// Compiles one entity: its point-entity meaning (player start, light, model) and its brushes.
+// Compiles one entity: its point-entity meaning (player start, model) and its brushes (lights: map_lights.cpp).
 class EntityCompiler {
 public:
     EntityCompiler(const MapFile& map, const CompileOptions& options, Level& level, std::vector<std::string>* warnings)
@@ -178,7 +179,6 @@ public:
             level_.playerStart = toWorld(quakeOrigin - Vec3{0, 0, kPlayerOriginAboveFeet}) * inv_;
             level_.playerStartYaw = e.yaw;
         }
-        if (startsWith(c, "light") && e.hasOrigin) addLight(me, e);
         if (c == "misc_model") addModel(me, e, static_cast<int>(index));
         for (const MapBrush& mb : me.brushes) addBrush(mb, classify(c), static_cast<int>(index));
         level_.entities.push_back(std::move(e));
@@ -187,24 +187,6 @@ public:
 private:
     [[noreturn]] void failAt(const SourcePos& at, const std::string& problem) const {
         throw MapError(map_.path + ":" + std::to_string(at.line) + ": " + problem);
-    }
-
-    void addLight(const MapEntity& me, const LevelEntity& e) {
-        LevelLight l;
-        l.position = e.origin;
-        const char* key = me.has("light") ? "light" : "_light";
-        l.intensity = number(me, key, l.intensity);
-        // The radius follows the value; OGRE takes it as a float attenuation range.
-        if (std::fabs(l.intensity) > kMaxLightValue)
-            failAt(me.pos, "light '" + std::string(key) + "' value '" + errorText(me.value(key)) + "' is out of range, expected -" +
-                               shortNumber(kMaxLightValue) + " to " + shortNumber(kMaxLightValue));
-        Vec3 col;
-        if (vec(me, me.has("_color") ? "_color" : "color", col)) {
-            if (col.x > 1 || col.y > 1 || col.z > 1) col = col / 255.0;  // 0..255 triplet
-            l.colour = col;
-        }
-        l.radius = std::fabs(l.intensity) * inv_;  // Quake's linear falloff reaches 0 at `light` units
-        level_.lights.push_back(l);
     }
 
     void addModel(const MapEntity& me, const LevelEntity& e, int entityIndex) {
@@ -314,6 +296,7 @@ Level compileLevel(const MapFile& map, const CompileOptions& options, std::vecto
 
     EntityCompiler compiler(map, options, level, warnings);
     for (std::size_t i = 0; i < map.entities.size(); ++i) compiler.compile(i);
+    compileLights(level, map.path, warnings);  // after all entities: spotlights aim at any entity's origin
     if (!level.hasPlayerStart) compiler.warn(map.path + ": no info_player_start; the player starts at the origin");
     // Every placed thing within the level's box plus a margin: a player start or model far out
     // reaches OGRE's shadow camera as a degenerate box (an assertion), and is a broken level anyway.

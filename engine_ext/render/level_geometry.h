@@ -1,6 +1,8 @@
 // Turns a compiled level (map::Level) into OGRE geometry: visible brush faces batched per
-// material inside spatial chunks (one ManualObject per chunk, one section per material), so a
-// big map draws in few batches yet still frustum-culls; plus an OGRE point light per map light.
+// material inside spatial chunks (one ManualObject per chunk, one section per material, each on its
+// own scene node at the chunk's centre), so a big map draws in few batches yet still frustum-culls;
+// chunks reached by more lights than the level pass takes are cut (level_chunks.h). Plus an OGRE
+// point light or spotlight per map light, its Quake falloff packed for level.frag.
 // RAII: everything created here is destroyed with the object.
 #pragma once
 
@@ -25,6 +27,9 @@ struct LevelGeometryStats {
     std::size_t batches = 0;  // ManualObject sections = draw calls before culling
     std::size_t triangles = 0;
     std::size_t lights = 0;
+    std::size_t chunkCuts = 0;           // chunks cut in two to stay under LEVEL_MAX_LIGHTS (level_chunks.h)
+    std::size_t overfullChunks = 0;      // chunks still reached by more (the log says so)
+    std::size_t mostLightsPerChunk = 0;  // the most lights reaching one chunk
 };
 
 // Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
@@ -34,7 +39,7 @@ constexpr unsigned kSkyVisibilityFlag = 1u << 30;
 class LevelGeometry {
 public:
     // chunkSize: metres per chunk edge. 16 m keeps a room or two per chunk: big enough that
-    // e3m4 draws in a few hundred batches, small enough that culling and the 8-light limit work.
+    // e3m4 draws in a few hundred batches, small enough that culling works and few chunks need a cut.
     LevelGeometry(Ogre::SceneManager& scene, const map::Level& level, LevelMaterials& materials,
                   double chunkSize = 16.0);
     ~LevelGeometry();
