@@ -2,18 +2,24 @@
 #include "render/ogre_convert.h"
 #include "render/level_geometry.h"
 
-#include "level/level_shared.h"
 #include "map/quake_light.h"
 #include "render/level_chunks.h"
 #include "render/level_materials.h"
+#include "render/light_grid.h"
 
+#include <OgreGpuProgramManager.h>
+#include <OgreHardwarePixelBuffer.h>
 #include <OgreLight.h>
+#include <OgreMaterialManager.h>
+#include <OgreTechnique.h>
+#include <OgreTextureManager.h>
 #include <OgreLogManager.h>
 #include <OgreManualObject.h>
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -39,22 +45,21 @@ LevelGeometry::LevelGeometry(Ogre::SceneManager& scene, const map::Level& level,
     node_ = scene_.getRootSceneNode()->createChildSceneNode();
     buildMeshes(level, materials, chunkSize);
     buildLights(level);
+    buildLightGrid(level);
 }
 
 LevelGeometry::~LevelGeometry() {
     for (auto* o : objects_) scene_.destroyManualObject(o);
     for (auto* l : lights_) scene_.destroyLight(l);
+    if (lightTexture_) Ogre::TextureManager::getSingleton().remove(lightTexture_);
     node_->removeAndDestroyAllChildren();
     scene_.destroySceneNode(node_);
 }
 
 void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize) {
-    std::vector<LightSphere> spheres;
-    for (const auto& l : level.lights) spheres.push_back({l.position, std::max(l.radius, kMinLightRange)});
-    // The sun (a directional light, always in OGRE's list) takes one of the pass's lights.
-    const std::size_t pointSlots = LEVEL_MAX_LIGHTS - 1;
-    ChunkStats cs;
-    const std::vector<LevelChunk> chunks = buildChunks(level, chunkSize, spheres, pointSlots, isSky, &cs);
+    // Lights no longer limit a chunk (level.frag reads them per pixel from the light grid).
+
+    const std::vector<LevelChunk> chunks = buildChunks(level, chunkSize, {}, std::numeric_limits<std::size_t>::max(), isSky);
 
     for (const LevelChunk& chunk : chunks) {
         // Each chunk on its own node at its centre: OGRE picks a chunk's lights by the sphere around
@@ -86,15 +91,6 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
         objects_.push_back(mo);
     }
     stats_.chunks = chunks.size();
-    stats_.chunkCuts = cs.split;
-    stats_.overfullChunks = cs.overfull;
-    stats_.mostLightsPerChunk = cs.mostLights;
-    if (cs.overfull > 0) {
-        std::ostringstream os;
-        os << "obscura: level: " << cs.overfull << " chunk(s) smaller than " << kMinChunkEdge << " m are still reached by more than "
-           << pointSlots << " lights (at most " << cs.mostLights << "): the farthest of them do not light those faces";
-        Ogre::LogManager::getSingleton().logMessage(os.str());
-    }
 }
 
 void LevelGeometry::buildLights(const map::Level& level) {
@@ -103,20 +99,13 @@ void LevelGeometry::buildLights(const map::Level& level) {
         auto* light = scene_.createLight();
         light->setType(l.spot ? Ogre::Light::LT_SPOTLIGHT : Ogre::Light::LT_POINT);
         light->setCastShadows(false);
-        // The packing level.frag reads (see its uniforms): diffuse = colour x value / 200 (the
-        // irradiance at full strength); attenuation = (reach, formula, map units per metre x wait,
-        // the gate as a fraction of the strength); specular = (_anglescale, _falloff_exponent, spot).
+        // OGRE's copy of the map's lights is for the smoke (its lamps: diffuse and range); the
+        // level's surfaces read them from the light grid (buildLightGrid).
         const float k = static_cast<float>(l.intensity / map::kQuakeLightUnit);
         light->setDiffuseColour(static_cast<float>(l.colour.x) * k, static_cast<float>(l.colour.y) * k,
                                 static_cast<float>(l.colour.z) * k);
-        const bool gated = l.formula == map::LightFormula::Inverse || l.formula == map::LightFormula::InverseSquare ||
-                           l.formula == map::LightFormula::InverseSquareA;
-        const double gate = gated && k != 0 ? map::kLightGate / std::fabs(k) : 0.0;
-        const double reach = std::max(l.formula == map::LightFormula::Linear ? l.radius : map::lightReach(l, size), kMinLightRange);
-        light->setAttenuation(static_cast<float>(reach), static_cast<float>(static_cast<int>(l.formula)),
-                              static_cast<float>(l.unitsPerMetreScaled), static_cast<float>(gate));
-        light->setSpecularColour(Ogre::ColourValue(static_cast<float>(l.angleScale), static_cast<float>(l.falloffExponent),
-                                                   l.spot ? 1.f : 0.f, 0.f));
+        light->setSpecularColour(Ogre::ColourValue::Black);
+        light->setAttenuation(static_cast<float>(std::max(map::lightReach(l, size), kMinLightRange)), 1.0f, 0.0f, 0.0f);
         auto* n = node_->createChildSceneNode(toOgre(l.position));
         if (l.spot) {
             // OGRE's cone angles are full angles; level.frag reads the cosines of their halves.
@@ -128,6 +117,36 @@ void LevelGeometry::buildLights(const map::Level& level) {
         lights_.push_back(light);
     }
     stats_.lights = lights_.size();
+}
+
+void LevelGeometry::buildLightGrid(const map::Level& level) {
+    const LightGrid grid = render::buildLightGrid(level);
+    static int serial = 0;  // a texture name of its own per level loaded
+    lightTexture_ = Ogre::TextureManager::getSingleton().createManual(
+        "Obscura/LevelLights/" + std::to_string(serial++), Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_2D, kLightGridWidth,
+        static_cast<Ogre::uint>(grid.rows()), 0, Ogre::PF_FLOAT32_RGBA, Ogre::TU_STATIC_WRITE_ONLY);
+    lightTexture_->getBuffer()->blitFromMemory(Ogre::PixelBox(kLightGridWidth, static_cast<Ogre::uint32>(grid.rows()), 1,
+                                                              Ogre::PF_FLOAT32_RGBA, const_cast<float*>(grid.texels.data())));
+    // Every material with the level pass's light unit (level/*, generated, the G-buffer fallback).
+    auto it = Ogre::MaterialManager::getSingleton().getResourceIterator();
+    while (it.hasMoreElements()) {
+        auto* material = static_cast<Ogre::Material*>(it.getNext().get());
+        for (auto* tech : material->getTechniques())
+            for (auto* pass : tech->getPasses())
+                if (auto* unit = pass->getTextureUnitState("levelLights")) unit->setTexture(lightTexture_);
+    }
+    auto& gpm = Ogre::GpuProgramManager::getSingleton();
+    const auto& all = gpm.getAvailableSharedParameters();
+    if (all.find("ObscuraLevelLights") == all.end())
+        throw std::runtime_error("shared_params ObscuraLevelLights is missing (media/materials/level.program)");
+    Ogre::GpuSharedParametersPtr p = gpm.getSharedParameters("ObscuraLevelLights");
+    p->setNamedConstant("lightGridOrigin", Ogre::Vector4(static_cast<float>(grid.origin.x), static_cast<float>(grid.origin.y),
+                                                         static_cast<float>(grid.origin.z), static_cast<float>(grid.cell)));
+    p->setNamedConstant("lightGridSize", Ogre::Vector4(static_cast<float>(grid.nx), static_cast<float>(grid.ny),
+                                                       static_cast<float>(grid.nz), static_cast<float>(kLightGridWidth)));
+    p->setNamedConstant("lightGridBases", Ogre::Vector4(static_cast<float>(grid.headerBase), static_cast<float>(grid.indexBase), 0, 0));
+    stats_.gridCell = grid.cell;
+    stats_.mostLightsPerCell = grid.mostInACell;
 }
 
 }  // namespace obscura::render

@@ -1,12 +1,15 @@
 // Turns a compiled level (map::Level) into OGRE geometry: visible brush faces batched per
 // material inside spatial chunks (one ManualObject per chunk, one section per material, each on its
-// own scene node at the chunk's centre), so a big map draws in few batches yet still frustum-culls;
-// chunks reached by more lights than the level pass takes are cut (level_chunks.h). Plus an OGRE
-// point light or spotlight per map light, its Quake falloff packed for level.frag.
+// own scene node at the chunk's centre), so a big map draws in few batches yet still frustum-culls.
+// The map's lights go into a float texture with a world grid of which lights reach each cell
+// (light_grid.h), read per pixel by level.frag: no light cap per batch. Plus an OGRE point light or
+// spotlight per map light, for the smoke.
 // RAII: everything created here is destroyed with the object.
 #pragma once
 
 #include "map/level.h"
+
+#include <OgreTexture.h>
 
 #include <cstddef>
 #include <vector>
@@ -27,9 +30,8 @@ struct LevelGeometryStats {
     std::size_t batches = 0;  // ManualObject sections = draw calls before culling
     std::size_t triangles = 0;
     std::size_t lights = 0;
-    std::size_t chunkCuts = 0;           // chunks cut in two to stay under LEVEL_MAX_LIGHTS (level_chunks.h)
-    std::size_t overfullChunks = 0;      // chunks still reached by more (the log says so)
-    std::size_t mostLightsPerChunk = 0;  // the most lights reaching one chunk
+    double gridCell = 0;                // the light grid's cell edge, metres (light_grid.h)
+    std::size_t mostLightsPerCell = 0;  // the most lights listed for one cell
 };
 
 // Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
@@ -51,11 +53,13 @@ public:
 private:
     void buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize);
     void buildLights(const map::Level& level);
+    void buildLightGrid(const map::Level& level);
 
     Ogre::SceneManager& scene_;
     Ogre::SceneNode* node_ = nullptr;
     std::vector<Ogre::ManualObject*> objects_;
     std::vector<Ogre::Light*> lights_;
+    Ogre::TexturePtr lightTexture_;
     LevelGeometryStats stats_;
 };
 

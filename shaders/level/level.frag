@@ -4,8 +4,7 @@
 //   the sun (worldspawn _sunlight), shadowed through a shadow map, wrapped a little so faces
 //   turned away are not flat black
 // + the map's light entities with Quake's falloff (map/quake_light.h has the same maths in C++, see
-//   there for the formulas): every light whose reach meets this batch, LEVEL_MAX_LIGHTS at most
-//   (LevelGeometry cuts chunks so no batch is reached by more).
+//   there for the formulas): every light listed for this point's grid cell, however many.
 // The hemispheric ambient (sky from above, ground from below), which AO darkens, is added by the
 // frame's lighting pass (shaders/frame/lighting.frag), and the tone map is applied once at the end.
 uniform sampler2D albedoMap;
@@ -14,14 +13,12 @@ uniform vec4 sunShadowTexel;     // 1/width, 1/height, width, height of sunShado
 uniform vec3 sunDirection;    // world space, unit, pointing towards the sun
 uniform vec3 sunColour;       // linear RGB
 #include "level_shared.h"
-uniform float lightCount;
-// OGRE's per-light arrays, packed by LevelGeometry::buildLights:
-uniform vec4 lightPositions[LEVEL_MAX_LIGHTS];    // world space; w = 0: the sun, lit apart with its shadow
-uniform vec4 lightColours[LEVEL_MAX_LIGHTS];      // colour x value / 200: the irradiance at full strength
-uniform vec4 lightAttenuations[LEVEL_MAX_LIGHTS]; // reach (m), formula (delay), map units per metre (x wait), gate / strength
-uniform vec4 lightShapes[LEVEL_MAX_LIGHTS];       // _anglescale, _falloff_exponent, spotlight (1) or not (0)
-uniform vec4 lightDirections[LEVEL_MAX_LIGHTS];   // spotlights: the way the light travels, world space
-uniform vec4 spotParams[LEVEL_MAX_LIGHTS];        // spotlights: cos of half the soft cone, of half the cone
+// The map's lights and the lights of each cell of a world grid (engine_ext/render/light_grid.h has
+// the layout), set per level by LevelGeometry (shared_params ObscuraLevelLights, level.program).
+uniform sampler2D levelLights;
+uniform vec4 lightGridOrigin;  // xyz: the grid's low corner (m); w: the cell edge (m)
+uniform vec4 lightGridSize;    // cells along x, y, z; w: the texture's width in texels
+uniform vec4 lightGridBases;   // x: the cells' first texel, y: the light numbers' first texel
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -31,6 +28,8 @@ in vec4 vShadowPos;
 #include "gbuffer_out.glsl"
 // Materials without an albedo texture (the GBuffer scheme's shared fallback) count as light grey.
 uniform float hasAlbedo;
+
+ivec2 texel(int address, int width) { return ivec2(address % width, address / width); }
 
 // Fraction of the sun reaching this point: 2x2 percentage-closer filtering of the shadow map.
 float sunVisibility(float ndotl)
@@ -63,43 +62,51 @@ void main()
     if (sun > 0.0 && dot(sunColour, sunColour) > 0.0) sun *= sunVisibility(max(ndotl, 0.0));
     light += sunColour * sun;
 
-    int count = int(lightCount);
     vec3 floorLight = vec3(0.0);  // delay 4 lights: a floor, not a sum
-    for (int i = 0; i < LEVEL_MAX_LIGHTS; ++i) {
-        if (i >= count) break;
-        if (lightPositions[i].w == 0.0) continue;  // the sun: lit above, with its shadow
-        vec4 att = lightAttenuations[i];
-        vec3 toLight = lightPositions[i].xyz - vWorldPos;
-        float dist = length(toLight);
-        if (dist >= att.x) continue;  // beyond its reach
-        int formula = int(att.y + 0.5);
-        if (formula == LEVEL_LIGHT_LOCAL_MINIMUM) {
-            floorLight = max(floorLight, lightColours[i].rgb);
-            continue;
+    ivec3 cell = ivec3(floor((vWorldPos - lightGridOrigin.xyz) / lightGridOrigin.w));
+    ivec3 cells = ivec3(lightGridSize.xyz);
+    if (all(greaterThanEqual(cell, ivec3(0))) && all(lessThan(cell, cells))) {
+        int width = int(lightGridSize.w);
+        vec4 header = texelFetch(levelLights, texel(int(lightGridBases.x) + cell.x + cells.x * (cell.y + cells.y * cell.z), width), 0);
+        int first = int(lightGridBases.y) + int(header.x);
+        int count = int(header.y);
+        for (int k = 0; k < count; ++k) {
+            int base = LEVEL_LIGHT_TEXELS * int(texelFetch(levelLights, texel(first + k, width), 0).r);
+            vec4 place = texelFetch(levelLights, texel(base, width), 0);  // position, reach
+            vec3 toLight = place.xyz - vWorldPos;
+            float dist = length(toLight);
+            if (dist >= place.w) continue;  // beyond its reach
+            vec4 colour = texelFetch(levelLights, texel(base + 1, width), 0);  // irradiance at full strength, formula
+            int formula = int(colour.w + 0.5);
+            if (formula == LEVEL_LIGHT_LOCAL_MINIMUM) {
+                floorLight = max(floorLight, colour.rgb);
+                continue;
+            }
+            vec3 dir = toLight / max(dist, 1e-4);
+            float cosine = dot(n, dir);
+            if (cosine <= 0.0) continue;  // behind the surface
+            vec4 shape = texelFetch(levelLights, texel(base + 2, width), 0);  // units a metre, gate, anglescale, exponent
+            float x = dist * shape.x;  // Quake's scaled distance, map units
+            float xi = max(x, LEVEL_MIN_INVERSE_DISTANCE);
+            float strength;
+            if (formula == LEVEL_LIGHT_LINEAR) strength = pow(clamp(1.0 - dist / place.w, 0.0, 1.0), shape.w);
+            else if (formula == LEVEL_LIGHT_INVERSE) strength = LEVEL_INVERSE_SCALE / xi;
+            else if (formula == LEVEL_LIGHT_INVERSE_SQUARE) strength = LEVEL_INVERSE_SCALE * LEVEL_INVERSE_SCALE / (xi * xi);
+            else if (formula == LEVEL_LIGHT_INVERSE_SQUARE_A) {
+                float s = x + LEVEL_INVERSE_SCALE;
+                strength = LEVEL_INVERSE_SCALE * LEVEL_INVERSE_SCALE / (s * s);
+            } else strength = 1.0;
+            strength = max(strength - shape.y, 0.0);  // the inverse laws' gate (0 for the others)
+            strength *= (1.0 - shape.z) + shape.z * cosine;
+            vec4 spot = texelFetch(levelLights, texel(base + 3, width), 0);
+            if (spot.w > 0.5) {
+                // The cone: 0 outside half its angle, a linear ramp in the cosine up to the soft cone.
+                vec2 cone = texelFetch(levelLights, texel(base + 4, width), 0).xy;
+                float c = dot(spot.xyz, -dir);
+                strength *= cone.x > cone.y ? clamp((c - cone.y) / (cone.x - cone.y), 0.0, 1.0) : step(cone.y, c);
+            }
+            light += colour.rgb * strength;
         }
-        vec3 dir = toLight / max(dist, 1e-4);
-        float cosine = dot(n, dir);
-        if (cosine <= 0.0) continue;  // behind the surface
-        vec4 shape = lightShapes[i];
-        float strength;
-        float x = dist * att.z;  // Quake's scaled distance, map units
-        float xi = max(x, LEVEL_MIN_INVERSE_DISTANCE);
-        if (formula == LEVEL_LIGHT_LINEAR) strength = pow(clamp(1.0 - dist / att.x, 0.0, 1.0), shape.y);
-        else if (formula == LEVEL_LIGHT_INVERSE) strength = LEVEL_INVERSE_SCALE / xi;
-        else if (formula == LEVEL_LIGHT_INVERSE_SQUARE) strength = LEVEL_INVERSE_SCALE * LEVEL_INVERSE_SCALE / (xi * xi);
-        else if (formula == LEVEL_LIGHT_INVERSE_SQUARE_A) {
-            float s = x + LEVEL_INVERSE_SCALE;
-            strength = LEVEL_INVERSE_SCALE * LEVEL_INVERSE_SCALE / (s * s);
-        } else strength = 1.0;
-        strength = max(strength - att.w, 0.0);  // the inverse laws' gate (0 for the others)
-        strength *= (1.0 - shape.x) + shape.x * cosine;
-        if (shape.z > 0.5) {
-            // The cone: 0 outside half its angle, a linear ramp in the cosine up to the soft cone.
-            float c = dot(lightDirections[i].xyz, -dir);
-            vec2 sp = spotParams[i].xy;
-            strength *= sp.x > sp.y ? clamp((c - sp.y) / (sp.x - sp.y), 0.0, 1.0) : step(sp.y, c);
-        }
-        light += lightColours[i].rgb * strength;
     }
     light = max(max(light, vec3(0.0)), floorLight);  // negative lights subtract, down to 0
 

@@ -2,13 +2,8 @@
 #ifndef OBSCURA_LEVEL_SHARED_H
 #define OBSCURA_LEVEL_SHARED_H
 
-// Lights one level batch is lit by: the size of level.frag's light arrays and the material pass's
-// `max_lights` (media/materials: level.program, level.material; a test checks they agree).
-// LevelGeometry cuts chunks until no chunk is reached by more (the sun takes one), so none is dropped.
-// 32: e3m4's busiest 16 m chunk is reached by 21 lights; at 32 its chunks need no cut, and a pixel
-// loops only over the lights of its own chunk (an unused slot costs nothing: the loop stops at the
-// count).
-#define LEVEL_MAX_LIGHTS 32
+// Texels a light takes in the light texture (engine_ext/render/light_grid.h: kLightTexels).
+#define LEVEL_LIGHT_TEXELS 5
 
 // Light formulas as level.frag reads them from the attenuation's y (the `delay` key, map::LightFormula).
 #define LEVEL_LIGHT_LINEAR 0

@@ -1,19 +1,20 @@
 // Light entities and worldspawn lighting keys (map_lights.cpp), Quake's falloff maths
-// (quake_light.cpp) against the formulas written out by hand, and the chunk cut that keeps every
-// batch under the level pass's light limit (render/level_chunks.cpp).
+// (quake_light.cpp) against the formulas written out by hand, the light grid level.frag reads
+// (render/light_grid.cpp) and the chunk cut (render/level_chunks.cpp).
 #include <gtest/gtest.h>
 
 #include "level/level_shared.h"
 #include "map/map_compile.h"
 #include "map/quake_light.h"
 #include "render/level_chunks.h"
+#include "render/light_grid.h"
 #include "test_maps.h"
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
-#include <sstream>
+#include <algorithm>
+#include <iostream>
 
 using namespace obscura;
 using namespace obscura::map;
@@ -185,14 +186,13 @@ TEST(MapLights, WorldspawnAmbientAndSunAliases) {
     EXPECT_NEAR(l.lighting.sunTravel.y, -1, 1e-12);
 }
 
-TEST(LevelChunks, ChunksReachedByTooManyLightsAreCutAndKeepEveryFace) {
-    // One 16 m floor face (one chunk) under 40 lights on a 2 m grid: more than the old 8-light cap
-    // and more than the pass's LEVEL_MAX_LIGHTS.
+TEST(LevelChunks, ChunksCutUnderALightLimitKeepEveryFace) {
+    // One 16 m floor face (one chunk) under 40 lights on a 2 m grid, cut to at most 7 a chunk.
     const Level level = compile(entity("\"classname\" \"worldspawn\"", cube(0, 0, -32, "floor", 512)));
     std::vector<render::LightSphere> lights;
     for (int i = 0; i < 8; ++i)
         for (int j = 0; j < 5; ++j) lights.push_back({{1.0 + 2 * i, 0.5, -1.0 - 2 * j - 3}, 1.875});
-    const std::size_t limit = LEVEL_MAX_LIGHTS - 1;
+    const std::size_t limit = 7;
     render::ChunkStats stats;
     const auto chunks = render::buildChunks(level, 16.0, lights, limit, [](const std::string&) { return false; }, &stats);
     EXPECT_GT(stats.split, 0u);
@@ -213,38 +213,57 @@ TEST(LevelChunks, ChunksReachedByTooManyLightsAreCutAndKeepEveryFace) {
     EXPECT_NEAR(area, original, 1e-6 * original);  // every face, clipped, still all there
 }
 
-TEST(LevelChunks, LibreQuakeE3m4NeedsFewCuts) {
-    const std::filesystem::path path = std::filesystem::path(OBSCURA_SHARED_DIR) / "maps/librequake/e3m4.map";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
-    std::vector<std::string> warnings;
-    const Level level = loadLevel(path.string(), {}, &warnings);
-    std::vector<render::LightSphere> lights;
-    for (const auto& l : level.lights) lights.push_back({l.position, l.radius});
-    render::ChunkStats stats;
-    const auto chunks = render::buildChunks(level, 16.0, lights, LEVEL_MAX_LIGHTS - 1,
-                                            [](const std::string& t) { return t.rfind("sky", 0) == 0; }, &stats);
-    std::cout << "e3m4: " << level.lights.size() << " lights, " << chunks.size() << " chunks, " << stats.split
-              << " cuts, at most " << stats.mostLights << " lights reach a chunk\n";
-    EXPECT_EQ(stats.overfull, 0u);
-    EXPECT_LE(stats.mostLights, static_cast<std::size_t>(LEVEL_MAX_LIGHTS - 1));
+namespace {
+// Every light that adds anything at `p` is listed for p's cell (points outside the grid, which
+// spans the level's brushes and lights, hold no surface: skipped).
+void expectEveryReachingLightListed(const Level& level, const render::LightGrid& grid, const Vec3& p) {
+    const Vec3 q = (p - grid.origin) / grid.cell;
+    if (q.x < 0 || q.y < 0 || q.z < 0 || q.x >= grid.nx || q.y >= grid.ny || q.z >= grid.nz) return;
+    const std::vector<int> listed = grid.lightsAt(p);
+    for (std::size_t i = 0; i < level.lights.size(); ++i) {
+        if (length(level.lights[i].position - p) >= lightReach(level.lights[i], 1e9)) continue;
+        EXPECT_NE(std::find(listed.begin(), listed.end(), static_cast<int>(i)), listed.end())
+            << "light " << i << " reaches (" << p.x << ", " << p.y << ", " << p.z << ") but is not listed";
+    }
+}
+}  // namespace
+
+TEST(LightGrid, EveryLightThatReachesAPointIsListedForItsCell) {
+    // 40 lamps over one face (tests/lighting/levels/many_lights.map): more than OGRE's 8 a pass.
+    const Level level = loadLevel(std::string(OBSCURA_SOURCE_DIR) + "/tests/lighting/levels/many_lights.map");
+    ASSERT_EQ(level.lights.size(), 40u);
+    const render::LightGrid grid = render::buildLightGrid(level);
+    for (double x = 0.05; x < 16; x += 0.25)
+        for (double z = -0.05; z > -16; z -= 0.25) expectEveryReachingLightListed(level, grid, {x, 0.0, z});
+    // The packed light: position and reach, colour x value / 200, the formula.
+    const float* t = &grid.texels[0];
+    EXPECT_FLOAT_EQ(t[0], static_cast<float>(level.lights[0].position.x));
+    EXPECT_FLOAT_EQ(t[3], static_cast<float>(level.lights[0].radius));
+    EXPECT_FLOAT_EQ(t[4], static_cast<float>(28.0 / 200));
+    EXPECT_FLOAT_EQ(t[7], 0.0f);  // linear
 }
 
-TEST(LevelChunks, TheProgramAndMaterialTakeLevelMaxLights) {
-    // level.program's light arrays and level.material's max_lights are script numbers: they must be
-    // LEVEL_MAX_LIGHTS, or OGRE hands the shader fewer lights than the chunks were cut for.
-    const auto read = [](const char* rel) {
-        std::ifstream in(std::filesystem::path(OBSCURA_SOURCE_DIR) / rel);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    };
-    const std::string program = read("media/materials/level.program"), material = read("media/materials/level.material");
-    const std::regex arrays("_array (\\d+)");
-    std::size_t n = 0;
-    for (auto it = std::sregex_iterator(program.begin(), program.end(), arrays); it != std::sregex_iterator(); ++it, ++n)
-        EXPECT_EQ(std::stoi((*it)[1]), LEVEL_MAX_LIGHTS) << (*it)[0];
-    EXPECT_EQ(n, 6u);
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(material, m, std::regex("max_lights (\\d+)")));
-    EXPECT_EQ(std::stoi(m[1]), LEVEL_MAX_LIGHTS);
+TEST(LightGrid, LibreQuakeE3m4) {
+    const std::filesystem::path path = std::filesystem::path(OBSCURA_SHARED_DIR) / "maps/librequake/e3m4.map";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
+    const Level level = loadLevel(path.string());
+    const render::LightGrid grid = render::buildLightGrid(level);
+    std::cout << "e3m4: " << level.lights.size() << " lights, grid " << grid.nx << " x " << grid.ny << " x " << grid.nz << " cells of "
+              << grid.cell << " m, " << grid.indices << " listings, at most " << grid.mostInACell << " lights a cell, "
+              << grid.rows() << " texture rows\n";
+    EXPECT_LE(static_cast<std::size_t>(grid.nx) * grid.ny * grid.nz, render::kMaxLightGridCells);
+    // Points near every light (its foot and halfway to its reach, four ways).
+    for (const auto& l : level.lights) {
+        const double r = lightReach(l, 1e9) * 0.5;
+        for (const Vec3& d : {Vec3{0, -r, 0}, Vec3{r, 0, 0}, Vec3{0, 0, r}, Vec3{-r, 0, -r * 0.5}})
+            expectEveryReachingLightListed(level, grid, l.position + d);
+    }
+}
+
+TEST(LightGrid, TheLayoutTheShaderReadsIsTheOneThePackerWrites) {
+    EXPECT_EQ(LEVEL_LIGHT_TEXELS, render::kLightTexels);
+    EXPECT_EQ(LEVEL_INVERSE_SCALE, kInverseLightScale);
+    EXPECT_EQ(LEVEL_MIN_INVERSE_DISTANCE, kMinInverseDistance);
+    EXPECT_EQ(LEVEL_LIGHT_INVERSE_SQUARE_A, static_cast<int>(LightFormula::InverseSquareA));
+    EXPECT_EQ(LEVEL_LIGHT_LOCAL_MINIMUM, static_cast<int>(LightFormula::LocalMinimum));
 }
