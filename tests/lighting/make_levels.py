@@ -4,7 +4,7 @@
  levels/falloff.map     one light of each kind over a floor, 12 m apart (tests/lighting: brightness
                         at each light's foot against map/quake_light.h), worldspawn _minlight 40
  levels/many_lights.map one 16 m floor face under 40 small lamps on a 2 m grid: more than the old
-                        8-light cap and more than one batch takes (LEVEL_MAX_LIGHTS)
+                        8-light cap (OGRE's 8 lights a pass)
 Quake units, 32 a metre; the floor's top is z = 0."""
 import os
 
@@ -55,5 +55,5 @@ for i in range(8):
     for j in range(5):
         entities.append([("classname", "light"), ("origin", f"{32 + 64 * i} {128 + 64 * j} 8"), ("light", "28")])
 write("many_lights.map", "40 lamps over one floor face (tests/lighting/lighting_render_test.cpp): every one must\n"
-      "light its foot, though the face's chunk is reached by more lights than a batch takes.",
+      "light its foot, though OGRE hands a pass 8 lights.",
       [], [box(0, 0, -16, 512, 512, 0)], entities)
