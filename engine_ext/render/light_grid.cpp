@@ -80,10 +80,10 @@ LightGrid buildLightGrid(const map::Level& level) {
         const double gate = gated(l.formula) && k != 0 ? map::kLightGate / std::fabs(k) : 0.0;
         const std::size_t t = i * kLightTexels;
         put(g.texels, t + 0, l.position.x, l.position.y, l.position.z, map::lightReach(l, levelSize));
-        put(g.texels, t + 1, l.colour.x * k, l.colour.y * k, l.colour.z * k, static_cast<int>(l.formula));
+        put(g.texels, t + 1, l.colour.x * k, l.colour.y * k, l.colour.z * k, static_cast<int>(l.formula) + (l.spot ? kSpotFlag : 0));
         put(g.texels, t + 2, l.unitsPerMetreScaled, gate, l.angleScale, l.falloffExponent);
-        put(g.texels, t + 3, l.spotDirection.x, l.spotDirection.y, l.spotDirection.z, l.spot ? 1 : 0);
-        put(g.texels, t + 4, l.spotCosInner, l.spotCosOuter, 0, 0);
+        put(g.texels, t + 3, l.spotDirection.x, l.spotDirection.y, l.spotDirection.z, l.spotCosInner);
+        put(g.texels, t + 4, l.spotCosOuter, 0, 0, 0);
     }
     std::size_t next = 0;
     for (std::size_t c = 0; c < n; ++c) {

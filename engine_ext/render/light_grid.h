@@ -4,9 +4,10 @@
 // and props and models drawn with the level's program are lit by the same lights.
 //
 // Texture layout (RGBA32F, kLightGridWidth texels a row, addresses row-major):
-//   from 0:           kLightTexels texels a light: (position, reach) (colour x value/200, formula)
-//                     (map units a metre x wait, gate / strength, _anglescale, _falloff_exponent)
-//                     (spot direction, 1 if a spotlight) (cos of half the soft cone, of half the cone, 0, 0)
+//   from 0:           kLightTexels texels a light: (position, reach) (colour x value/200, formula
+//                     + kSpotFlag for a spotlight) (map units a metre x wait, gate / strength,
+//                     _anglescale, _falloff_exponent) (spot direction, cos of half the soft cone)
+//                     (cos of half the cone, 0, 0, 0): the last two read for spotlights only
 //   from headerBase:  one texel a cell, x fastest: (first index, count, 0, 0)
 //   from indexBase:   light numbers, one a texel (r)
 #pragma once
@@ -20,6 +21,7 @@ namespace obscura::render {
 
 constexpr int kLightGridWidth = 2048;  // texels a row: llvmpipe and GL 3.3 GPUs take 8192 at least
 constexpr int kLightTexels = 5;
+constexpr int kSpotFlag = 8;  // added to a spotlight's formula (LEVEL_LIGHT_SPOT_FLAG)
 // The grid has at most this many cells (a 4 MiB header at 16 bytes a cell): cells grow on large
 // levels; e3m4's are 2.2 m (94 x 34 x 74, at most 15 lights a cell). Below 1 m a cell buys nothing
 // (lights reach metres).

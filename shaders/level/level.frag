@@ -76,8 +76,10 @@ void main()
             vec3 toLight = place.xyz - vWorldPos;
             float dist = length(toLight);
             if (dist >= place.w) continue;  // beyond its reach
-            vec4 colour = texelFetch(levelLights, texel(base + 1, width), 0);  // irradiance at full strength, formula
+            vec4 colour = texelFetch(levelLights, texel(base + 1, width), 0);  // irradiance at full strength, formula (+8: spot)
             int formula = int(colour.w + 0.5);
+            bool spotlight = formula >= LEVEL_LIGHT_SPOT_FLAG;
+            formula -= spotlight ? LEVEL_LIGHT_SPOT_FLAG : 0;
             if (formula == LEVEL_LIGHT_LOCAL_MINIMUM) {
                 floorLight = max(floorLight, colour.rgb);
                 continue;
@@ -89,8 +91,10 @@ void main()
             float x = dist * shape.x;  // Quake's scaled distance, map units
             float xi = max(x, LEVEL_MIN_INVERSE_DISTANCE);
             float strength;
-            if (formula == LEVEL_LIGHT_LINEAR) strength = pow(clamp(1.0 - dist / place.w, 0.0, 1.0), shape.w);
-            else if (formula == LEVEL_LIGHT_INVERSE) strength = LEVEL_INVERSE_SCALE / xi;
+            if (formula == LEVEL_LIGHT_LINEAR) {
+                strength = clamp(1.0 - dist / place.w, 0.0, 1.0);
+                if (shape.w != 1.0) strength = pow(strength, shape.w);  // pow is dear on llvmpipe: Quake's 1 skips it
+            } else if (formula == LEVEL_LIGHT_INVERSE) strength = LEVEL_INVERSE_SCALE / xi;
             else if (formula == LEVEL_LIGHT_INVERSE_SQUARE) strength = LEVEL_INVERSE_SCALE * LEVEL_INVERSE_SCALE / (xi * xi);
             else if (formula == LEVEL_LIGHT_INVERSE_SQUARE_A) {
                 float s = x + LEVEL_INVERSE_SCALE;
@@ -98,12 +102,12 @@ void main()
             } else strength = 1.0;
             strength = max(strength - shape.y, 0.0);  // the inverse laws' gate (0 for the others)
             strength *= (1.0 - shape.z) + shape.z * cosine;
-            vec4 spot = texelFetch(levelLights, texel(base + 3, width), 0);
-            if (spot.w > 0.5) {
+            if (spotlight) {
                 // The cone: 0 outside half its angle, a linear ramp in the cosine up to the soft cone.
-                vec2 cone = texelFetch(levelLights, texel(base + 4, width), 0).xy;
+                vec4 spot = texelFetch(levelLights, texel(base + 3, width), 0);  // direction, cos of half the soft cone
+                float cosOuter = texelFetch(levelLights, texel(base + 4, width), 0).x;
                 float c = dot(spot.xyz, -dir);
-                strength *= cone.x > cone.y ? clamp((c - cone.y) / (cone.x - cone.y), 0.0, 1.0) : step(cone.y, c);
+                strength *= spot.w > cosOuter ? clamp((c - cosOuter) / (spot.w - cosOuter), 0.0, 1.0) : step(cosOuter, c);
             }
             light += colour.rgb * strength;
         }

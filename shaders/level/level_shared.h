@@ -12,6 +12,8 @@
 #define LEVEL_LIGHT_NONE 3
 #define LEVEL_LIGHT_LOCAL_MINIMUM 4
 #define LEVEL_LIGHT_INVERSE_SQUARE_A 5
+// Added to the formula of a spotlight (its cone texels are read only then).
+#define LEVEL_LIGHT_SPOT_FLAG 8
 // map::kInverseLightScale and map::kMinInverseDistance (quake_light.h), for the shader.
 #define LEVEL_INVERSE_SCALE 128.0
 #define LEVEL_MIN_INVERSE_DISTANCE 16.0
