@@ -19,7 +19,7 @@
 
 namespace obscura::render {
 
-constexpr int kLightGridWidth = 2048;  // texels a row: llvmpipe and GL 3.3 GPUs take 8192 at least
+constexpr int kLightGridWidth = 2048;  // texels a row (a power of two: level.frag shifts); GL 3.3 GPUs take 8192 at least
 constexpr int kLightTexels = 5;
 constexpr int kSpotFlag = 8;  // added to a spotlight's formula (LEVEL_LIGHT_SPOT_FLAG)
 // The grid has at most this many cells (a 4 MiB header at 16 bytes a cell): cells grow on large

@@ -29,7 +29,8 @@ in vec4 vShadowPos;
 // Materials without an albedo texture (the GBuffer scheme's shared fallback) count as light grey.
 uniform float hasAlbedo;
 
-ivec2 texel(int address, int width) { return ivec2(address % width, address / width); }
+// Integer division is scalar on llvmpipe (no SIMD divide): the width is a power of two, so shifts.
+ivec2 texel(int address, int width) { return ivec2(address & (LEVEL_LIGHT_ROW - 1), address >> LEVEL_LIGHT_ROW_LOG2); }
 
 // Fraction of the sun reaching this point: 2x2 percentage-closer filtering of the shadow map.
 float sunVisibility(float ndotl)

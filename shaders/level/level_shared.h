@@ -4,6 +4,9 @@
 
 // Texels a light takes in the light texture (engine_ext/render/light_grid.h: kLightTexels).
 #define LEVEL_LIGHT_TEXELS 5
+// Texels a row of the light texture (render/light_grid.h: kLightGridWidth), a power of two.
+#define LEVEL_LIGHT_ROW_LOG2 11
+#define LEVEL_LIGHT_ROW (1 << LEVEL_LIGHT_ROW_LOG2)
 
 // Light formulas as level.frag reads them from the attenuation's y (the `delay` key, map::LightFormula).
 #define LEVEL_LIGHT_LINEAR 0

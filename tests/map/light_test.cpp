@@ -263,6 +263,7 @@ TEST(LightGrid, LibreQuakeE3m4) {
 TEST(LightGrid, TheLayoutTheShaderReadsIsTheOneThePackerWrites) {
     EXPECT_EQ(LEVEL_LIGHT_TEXELS, render::kLightTexels);
     EXPECT_EQ(LEVEL_LIGHT_SPOT_FLAG, render::kSpotFlag);
+    EXPECT_EQ(LEVEL_LIGHT_ROW, render::kLightGridWidth);
     EXPECT_EQ(LEVEL_INVERSE_SCALE, kInverseLightScale);
     EXPECT_EQ(LEVEL_MIN_INVERSE_DISTANCE, kMinInverseDistance);
     EXPECT_EQ(LEVEL_LIGHT_INVERSE_SQUARE_A, static_cast<int>(LightFormula::InverseSquareA));
