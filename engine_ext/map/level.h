@@ -93,11 +93,48 @@ struct LevelEntity {
     }
 };
 
+// Quake's light formulas, the `delay` key of a light entity (ericw-tools' numbering).
+enum class LightFormula {
+    Linear = 0,          // value - distance (in map units, scaled by `wait`), reaching 0 at `value` units
+    Inverse = 1,         // value * 128 / distance
+    InverseSquare = 2,   // value * 128^2 / distance^2
+    None = 3,            // value at any distance
+    LocalMinimum = 4,    // no falloff; raises the light to `value` rather than adding to it
+    InverseSquareA = 5,  // value * 128^2 / (distance + 128)^2: no hot spot at the source
+};
+
+// A light entity (`light`, `light_fluoro`, `light_torch_*`, ...), compiled by map_lights.cpp; the
+// falloff maths (the same as shaders/level/level.frag) is in quake_light.h.
 struct LevelLight {
     Vec3 position;
     Vec3 colour{1, 1, 1};  // linear RGB, 0..1 (from `_color`/`color`, default white)
-    double intensity = 300;  // Quake `light` value (300 default)
-    double radius = 0;       // metres of influence: `light` value / unitsPerMetre... see map_compile.cpp
+    double intensity = 300;  // Quake `light` value (300 default); negative lights subtract
+    double radius = 0;       // metres the light reaches (linear: where it reaches 0; others: the gate, quake_light.h)
+    LightFormula formula = LightFormula::Linear;
+    double unitsPerMetreScaled = 32;  // map units a metre counts as in the falloff: units per metre x `wait` x worldspawn `_dist`
+    double angleScale = 0.5;          // `_anglescale`: 0 = angle of incidence ignored, 1 = Lambert's cosine
+    double falloffExponent = 1;       // Obscura's `_falloff_exponent` (linear lights): 1 = Quake, 2 = the smoother arena lamps
+    bool spot = false;                // `target` or `mangle`: a spotlight
+    Vec3 spotDirection{0, -1, 0};     // unit, the way the light travels
+    double spotCosOuter = -1;         // cos of half the cone (`angle`/`_cone`, default 40 degrees)
+    double spotCosInner = -1;         // cos of half the soft cone (`_softangle`), = spotCosOuter when none
+    SourcePos pos;
+};
+
+// The level-wide lighting keys of worldspawn (and of a `_sun` light entity), read by map_lights.cpp
+// and turned into the frame's constants by render/level_lighting.cpp.
+struct LevelLightingKeys {
+    bool hasLightEntities = false;  // the level places lights: its ambient defaults to Quake's (none)
+    bool hasMinlight = false;       // worldspawn `light` / `_minlight`
+    double minlight = 0;            // Quake light units
+    Vec3 minlightColour{1, 1, 1};   // `_minlight_color` / `_mincolor`
+    bool hasAmbient = false;        // Obscura's `_ambient_sky` / `_ambient_ground`: the hemisphere itself
+    Vec3 ambientSky, ambientGround; // linear RGB irradiance from above / below
+    double sunlight = 0;            // `_sunlight` (or a `_sun` light's `light`)
+    Vec3 sunTravel{0, -1, 0};       // unit, world space, the way sunlight travels (`_sunlight_mangle`, ...)
+    Vec3 sunColour{1, 1, 1};
+    double dome = 0, domeBelow = 0; // `_sunlight2` (upper sky dome), `_sunlight3` (lower)
+    Vec3 domeColour{1, 1, 1}, domeBelowColour{1, 1, 1};
 };
 
 struct LevelModel {
@@ -115,6 +152,7 @@ struct Level {
     std::vector<LevelEntity> entities;  // all entities in file order (0 = worldspawn)
     std::vector<LevelBrush> brushes;
     std::vector<LevelLight> lights;
+    LevelLightingKeys lighting;
     std::vector<LevelModel> models;  // misc_model
     Vec3 playerStart;
     double playerStartYaw = 0;

@@ -6,6 +6,7 @@
 #include "map/input_file.h"
 #include "map/surface_rules.h"
 #include "map/liquid.h"
+#include "map/map_lights.h"
 
 #include <algorithm>
 #include <cctype>
@@ -118,7 +119,7 @@ bool isInvisibleTexture(const std::string& texture) {
 bool isLiquidTexture(const std::string& texture) { return !texture.empty() && texture[0] == '*'; }
 
 namespace {
-// Compiles one entity: its point-entity meaning (player start, light, model) and its brushes.
+// Compiles one entity: its point-entity meaning (player start, model) and its brushes (lights: map_lights.cpp).
 class EntityCompiler {
 public:
     EntityCompiler(const MapFile& map, const CompileOptions& options, Level& level, std::vector<std::string>* warnings)
@@ -184,7 +185,6 @@ public:
             level_.playerStart = toWorld(quakeOrigin - Vec3{0, 0, kPlayerOriginAboveFeet}) * inv_;
             level_.playerStartYaw = e.yaw;
         }
-        if (known && known->role == EntityRole::Light && e.hasOrigin) addLight(me, e);
         if (known && known->role == EntityRole::Model) addModel(me, e, static_cast<int>(index));
         current_ = e;  // its keys, for the liquid alpha of its brushes (pushed after them)
         for (const MapBrush& mb : me.brushes) addBrush(mb, brushRole(known, c), static_cast<int>(index));
@@ -205,24 +205,6 @@ private:
 
     [[noreturn]] void failAt(const SourcePos& at, const std::string& problem) const {
         throw MapError(map_.path + ":" + std::to_string(at.line) + ": " + problem);
-    }
-
-    void addLight(const MapEntity& me, const LevelEntity& e) {
-        LevelLight l;
-        l.position = e.origin;
-        const char* key = me.has("light") ? "light" : "_light";
-        l.intensity = number(me, key, l.intensity);
-        // The radius follows the value; OGRE takes it as a float attenuation range.
-        if (std::fabs(l.intensity) > kMaxLightValue)
-            failAt(me.pos, "light '" + std::string(key) + "' value '" + errorText(me.value(key)) + "' is out of range, expected -" +
-                               shortNumber(kMaxLightValue) + " to " + shortNumber(kMaxLightValue));
-        Vec3 col;
-        if (vec(me, me.has("_color") ? "_color" : "color", col)) {
-            if (col.x > 1 || col.y > 1 || col.z > 1) col = col / 255.0;  // 0..255 triplet
-            l.colour = col;
-        }
-        l.radius = std::fabs(l.intensity) * inv_;  // Quake's linear falloff reaches 0 at `light` units
-        level_.lights.push_back(l);
     }
 
     void addModel(const MapEntity& me, const LevelEntity& e, int entityIndex) {
@@ -360,6 +342,7 @@ Level compileLevel(const MapFile& map, const CompileOptions& options, std::vecto
     EntityCompiler compiler(map, options, level, warnings);
     for (std::size_t i = 0; i < map.entities.size(); ++i) compiler.compile(i);
     hideBuriedLiquidFaces(level);  // a pool's sides and bottom against its walls are not drawn
+    compileLights(level, map.path, warnings);  // after all entities: spotlights aim at any entity's origin
     if (!level.hasPlayerStart) compiler.warn(map.path + ": no info_player_start; the player starts at the origin");
     // Every placed thing within the level's box plus a margin: a player start or model far out
     // reaches OGRE's shadow camera as a degenerate box (an assertion), and is a broken level anyway.

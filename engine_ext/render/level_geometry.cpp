@@ -3,16 +3,25 @@
 #include "render/level_geometry.h"
 
 #include "frame/frame.h"
+#include "map/quake_light.h"
 #include "render/level_materials.h"
+#include "render/light_grid.h"
 
+#include <OgreGpuProgramManager.h>
+#include <OgreHardwarePixelBuffer.h>
 #include <OgreLight.h>
+#include <OgreMaterialManager.h>
+#include <OgreTechnique.h>
+#include <OgreTextureManager.h>
+#include <OgreLogManager.h>
 #include <OgreManualObject.h>
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
-#include <tuple>
+#include <sstream>
 
 namespace obscura::render {
 
@@ -32,10 +41,12 @@ struct Face {
     bool twoSided;  // liquids: drawn again facing in, so they show from below and from inside
 };
 
+double levelSize(const map::Level& level) {
+    return level.bounds.empty() ? 1.0 : length(level.bounds.max - level.bounds.min);
+}
 
-// A Quake `light` of 300 (the default) is a bright bulb; this maps it to a diffuse colour of
-// about 1.5 at the light, which with the squared falloff in level.frag reads like Quake's lighting.
-constexpr double kLightColourPer300 = 1.5;
+// OGRE takes a light's reach as a float range; a light that reaches nothing still needs a positive one.
+constexpr double kMinLightRange = 1e-3;
 }  // namespace
 
 LevelGeometry::LevelGeometry(Ogre::SceneManager& scene, const map::Level& level, LevelMaterials& materials,
@@ -44,11 +55,13 @@ LevelGeometry::LevelGeometry(Ogre::SceneManager& scene, const map::Level& level,
     node_ = scene_.getRootSceneNode()->createChildSceneNode();
     buildMeshes(level, materials, chunkSize);
     buildLights(level);
+    buildLightGrid(level);
 }
 
 LevelGeometry::~LevelGeometry() {
     for (auto* o : objects_) scene_.destroyManualObject(o);
     for (auto* l : lights_) scene_.destroyLight(l);
+    if (lightTexture_) Ogre::TextureManager::getSingleton().remove(lightTexture_);
     node_->removeAndDestroyAllChildren();
     scene_.destroySceneNode(node_);
 }
@@ -114,21 +127,59 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
 }
 
 void LevelGeometry::buildLights(const map::Level& level) {
+    const double size = levelSize(level);
     for (const auto& l : level.lights) {
         auto* light = scene_.createLight();
-        light->setType(Ogre::Light::LT_POINT);
+        light->setType(l.spot ? Ogre::Light::LT_SPOTLIGHT : Ogre::Light::LT_POINT);
         light->setCastShadows(false);
-        const float k = static_cast<float>(l.intensity / 300.0 * kLightColourPer300);
+        // OGRE's copy of the map's lights is for the smoke (its lamps: diffuse and range); the
+        // level's surfaces read them from the light grid (buildLightGrid).
+        const float k = static_cast<float>(l.intensity / map::kQuakeLightUnit);
         light->setDiffuseColour(static_cast<float>(l.colour.x) * k, static_cast<float>(l.colour.y) * k,
                                 static_cast<float>(l.colour.z) * k);
         light->setSpecularColour(Ogre::ColourValue::Black);
-        const float range = static_cast<float>(std::max(l.radius, 1.0));
-        light->setAttenuation(range, 1.0f, 0.0f, 0.0f);
+        light->setAttenuation(static_cast<float>(std::max(map::lightReach(l, size), kMinLightRange)), 1.0f, 0.0f, 0.0f);
         auto* n = node_->createChildSceneNode(toOgre(l.position));
+        if (l.spot) {
+            // OGRE's cone angles are full angles; level.frag reads the cosines of their halves.
+            light->setSpotlightRange(Ogre::Radian(static_cast<float>(2 * std::acos(l.spotCosInner))),
+                                     Ogre::Radian(static_cast<float>(2 * std::acos(l.spotCosOuter))), 1.0f);
+            n->setDirection(toOgre(l.spotDirection), Ogre::Node::TS_WORLD);
+        }
         n->attachObject(light);
         lights_.push_back(light);
     }
     stats_.lights = lights_.size();
+}
+
+void LevelGeometry::buildLightGrid(const map::Level& level) {
+    const LightGrid grid = render::buildLightGrid(level);
+    static int serial = 0;  // a texture name of its own per level loaded
+    lightTexture_ = Ogre::TextureManager::getSingleton().createManual(
+        "Obscura/LevelLights/" + std::to_string(serial++), Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_2D, kLightGridWidth,
+        static_cast<Ogre::uint>(grid.rows()), 0, Ogre::PF_FLOAT32_RGBA, Ogre::TU_STATIC_WRITE_ONLY);
+    lightTexture_->getBuffer()->blitFromMemory(Ogre::PixelBox(kLightGridWidth, static_cast<Ogre::uint32>(grid.rows()), 1,
+                                                              Ogre::PF_FLOAT32_RGBA, const_cast<float*>(grid.texels.data())));
+    // Every material with the level pass's light unit (level/*, generated, the G-buffer fallback).
+    auto it = Ogre::MaterialManager::getSingleton().getResourceIterator();
+    while (it.hasMoreElements()) {
+        auto* material = static_cast<Ogre::Material*>(it.getNext().get());
+        for (auto* tech : material->getTechniques())
+            for (auto* pass : tech->getPasses())
+                if (auto* unit = pass->getTextureUnitState("levelLights")) unit->setTexture(lightTexture_);
+    }
+    auto& gpm = Ogre::GpuProgramManager::getSingleton();
+    const auto& all = gpm.getAvailableSharedParameters();
+    if (all.find("ObscuraLevelLights") == all.end())
+        throw std::runtime_error("shared_params ObscuraLevelLights is missing (media/materials/level.program)");
+    Ogre::GpuSharedParametersPtr p = gpm.getSharedParameters("ObscuraLevelLights");
+    p->setNamedConstant("lightGridOrigin", Ogre::Vector4(static_cast<float>(grid.origin.x), static_cast<float>(grid.origin.y),
+                                                         static_cast<float>(grid.origin.z), static_cast<float>(grid.cell)));
+    p->setNamedConstant("lightGridSize", Ogre::Vector4(static_cast<float>(grid.nx), static_cast<float>(grid.ny),
+                                                       static_cast<float>(grid.nz), static_cast<float>(kLightGridWidth)));
+    p->setNamedConstant("lightGridBases", Ogre::Vector4(static_cast<float>(grid.headerBase), static_cast<float>(grid.indexBase), 0, 0));
+    stats_.gridCell = grid.cell;
+    stats_.mostLightsPerCell = grid.mostInACell;
 }
 
 }  // namespace obscura::render

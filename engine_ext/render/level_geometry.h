@@ -1,12 +1,17 @@
 // Turns a compiled level (map::Level) into OGRE geometry: visible brush faces batched per
-// material inside spatial chunks (one ManualObject per chunk, one section per material), so a
-// big map draws in few batches yet still frustum-culls; plus an OGRE point light per map light.
+// material inside spatial chunks (one ManualObject per chunk, one section per material, each on its
+// own scene node at the chunk's centre), so a big map draws in few batches yet still frustum-culls.
+// The map's lights go into a float texture with a world grid of which lights reach each cell
+// (light_grid.h), read per pixel by level.frag: no light cap per batch. Plus an OGRE point light or
+// spotlight per map light, for the smoke.
 // Liquid faces are two-sided (each also drawn facing in); translucent ones (alpha < 1) are
 // chunked apart, in frame::kLiquidQueue, casting no shadow (shaders/level/liquid.frag).
 // RAII: everything created here is destroyed with the object.
 #pragma once
 
 #include "map/level.h"
+
+#include <OgreTexture.h>
 
 #include <cstddef>
 #include <vector>
@@ -28,6 +33,8 @@ struct LevelGeometryStats {
     std::size_t triangles = 0;     // liquids' back faces included
     std::size_t liquidBatches = 0;  // chunks of translucent liquid (frame::kLiquidQueue)
     std::size_t lights = 0;
+    double gridCell = 0;                // the light grid's cell edge, metres (light_grid.h)
+    std::size_t mostLightsPerCell = 0;  // the most lights listed for one cell
 };
 
 // Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
@@ -40,7 +47,7 @@ constexpr unsigned kLiquidVisibilityFlag = 1u << 29;
 class LevelGeometry {
 public:
     // chunkSize: metres per chunk edge. 16 m keeps a room or two per chunk: big enough that
-    // e3m4 draws in a few hundred batches, small enough that culling and the 8-light limit work.
+    // e3m4 draws in a few hundred batches, small enough that culling works and few chunks need a cut.
     LevelGeometry(Ogre::SceneManager& scene, const map::Level& level, LevelMaterials& materials,
                   double chunkSize = 16.0);
     ~LevelGeometry();
@@ -52,11 +59,13 @@ public:
 private:
     void buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize);
     void buildLights(const map::Level& level);
+    void buildLightGrid(const map::Level& level);
 
     Ogre::SceneManager& scene_;
     Ogre::SceneNode* node_ = nullptr;
     std::vector<Ogre::ManualObject*> objects_;
     std::vector<Ogre::Light*> lights_;
+    Ogre::TexturePtr lightTexture_;
     LevelGeometryStats stats_;
 };
 

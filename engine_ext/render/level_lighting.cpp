@@ -2,61 +2,54 @@
 #include "render/level_lighting.h"
 #include "render/ogre_convert.h"
 
+#include "map/quake_light.h"
+
 #include <Ogre.h>
 #include <OgreGpuProgramManager.h>
 #include <OgreShadowCameraSetupFocused.h>
 
-#include <cmath>
-#include <sstream>
 
 namespace obscura::render {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
-// ericw-tools' default `_sunlight` is 0 (off); a typical outdoor map uses 100-300. 200 maps to a
-// sun of colour 1.0, which with the tone map in level.frag gives a bright but unclipped wall.
-constexpr double kSunlightUnit = 200.0;
+// Quake light values, `_sunlight` included, share one scale (map/quake_light.h): 200 maps to a sun
+// of colour 1.0, which with the tone map gives a bright but unclipped wall.
+constexpr double kSunlightUnit = map::kQuakeLightUnit;
 // `_sunlight2` (the sky dome) of 150 gives an ambient of about 0.4 from above.
 constexpr double kSkyDomeUnit = 375.0;
+// The ambient of a level that places lights but sets no `_minlight`: Quake's is 0; this floor (two
+// light units) keeps unlit corners a dark shape for the AO to work on (about 28/255 on a mid-grey
+// wall after the tone map) instead of flat black.
+constexpr double kLitLevelAmbient = 0.01;
 // Sun shadow map: 1024^2, focused on the view frustum, keeps wall and pillar shadows crisp at
 // play distance; on llvmpipe at 720p the 2048^2 map cost 21 ms a frame, 1024^2 costs 7 ms.
 // beyond 50 m (a long firing range) everything counts as lit.
 constexpr unsigned kShadowMapSize = 1024;
 constexpr float kShadowDistance = 50.0f;
-
-Vec3 parseVec(const std::string& s, const Vec3& fallback) {
-    std::istringstream is(s);
-    Vec3 v;
-    if (!(is >> v.x >> v.y >> v.z)) return fallback;
-    return v;
-}
-
-Vec3 parseColour(const std::string& s) {
-    Vec3 c = parseVec(s, {1, 1, 1});
-    if (c.x > 1 || c.y > 1 || c.z > 1) c = c / 255.0;
-    return c;
-}
-
 }  // namespace
 
 LevelLightingParams computeLevelLighting(const map::Level& level) {
     LevelLightingParams p;
-    if (level.entities.empty()) return p;
-    const map::LevelEntity& world = level.entities.front();
-    const double sun = std::atof(world.value("_sunlight", "0").c_str());
-    if (sun > 0) {
-        // Default straight down, as in ericw-tools.
-        const Vec3 mangle = parseVec(world.value("_sun_mangle", "0 -90 0"), {0, -90, 0});
-        const double yaw = mangle.x * kPi / 180.0, pitch = mangle.y * kPi / 180.0;
-        // Direction the light travels, in Quake axes, converted to Y-up: (x, z, -y).
-        const Vec3 travelQ{std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch)};
-        p.sunDirection = normalize(-Vec3{travelQ.x, travelQ.z, -travelQ.y});
-        p.sunColour = parseColour(world.value("_sunlight_color", "255 255 255")) * (sun / kSunlightUnit);
+    const map::LevelLightingKeys& k = level.lighting;
+    if (k.sunlight > 0) {
+        p.sunDirection = normalize(-k.sunTravel);
+        p.sunColour = k.sunColour * (k.sunlight / kSunlightUnit);
     }
-    const double dome = std::atof(world.value("_sunlight2", "0").c_str());
-    if (dome > 0) {
-        const Vec3 c = parseColour(world.value("_sunlight2_color", "255 255 255"));
-        p.skyAmbient = c * (dome / kSkyDomeUnit) + p.skyAmbient * 0.5;
+    const Vec3 dome = k.domeColour * (k.dome / kSkyDomeUnit), domeBelow = k.domeBelowColour * (k.domeBelow / kSkyDomeUnit);
+    if (k.hasAmbient) {
+        // Obscura's own hemisphere keys: the ambient as given (the arena keeps its look through them).
+        p.skyAmbient = k.ambientSky;
+        p.groundAmbient = k.ambientGround;
+    } else if (k.hasMinlight || k.hasLightEntities) {
+        // Quake's ambient: `_minlight` (else the dark floor) from everywhere, plus the sky domes.
+        const Vec3 floor = k.hasMinlight ? k.minlightColour * (k.minlight / map::kQuakeLightUnit)
+                                         : Vec3{kLitLevelAmbient, kLitLevelAmbient, kLitLevelAmbient};
+        p.skyAmbient = floor + dome;
+        p.groundAmbient = floor + domeBelow;
+    } else if (k.dome > 0) {
+        // A level without lights or ambient keys keeps the default hemisphere, half of it under a dome.
+        p.skyAmbient = dome + p.skyAmbient * 0.5;
+        p.groundAmbient = p.groundAmbient + domeBelow;
     }
     return p;
 }

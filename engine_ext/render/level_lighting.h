@@ -19,8 +19,10 @@ struct LevelLightingParams {
     Vec3 groundAmbient{0.16, 0.14, 0.12};
 };
 
-// Reads `_sunlight`, `_sun_mangle` ("yaw pitch roll", the direction sunlight travels, as in
-// ericw-tools), `_sunlight_color`, `_sunlight2` (sky-dome light) and `_sunlight2_color`.
+// From the worldspawn keys map_lights.cpp read (Level::lighting): the sun (`_sunlight`, its mangle
+// and colour, or a `_sun` light), the ambient: Obscura's `_ambient_sky`/`_ambient_ground` as given;
+// else, in a level with lights or `_minlight`, `_minlight` (default: a dark floor) plus the sky
+// domes `_sunlight2` (from above) and `_sunlight3` (below); else the default hemisphere.
 LevelLightingParams computeLevelLighting(const map::Level& level);
 
 // Sets the shared parameters ObscuraLighting (sunDirection, sunColour, skyAmbient, groundAmbient)

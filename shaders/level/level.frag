@@ -3,7 +3,8 @@
 // the depth and the direct light arriving here, as irradiance (linear, HDR):
 //   the sun (worldspawn _sunlight), shadowed through a shadow map, wrapped a little so faces
 //   turned away are not flat black
-// + up to 8 point lights per batch with Quake-like falloff reaching zero at the light's range.
+// + the map's light entities with Quake's falloff (map/quake_light.h has the same maths in C++, see
+//   there for the formulas): every light listed for this point's grid cell, however many.
 // The hemispheric ambient (sky from above, ground from below), which AO darkens, is added by the
 // frame's lighting pass (shaders/frame/lighting.frag), and the tone map is applied once at the end.
 uniform sampler2D albedoMap;
@@ -11,10 +12,13 @@ uniform sampler2D sunShadowMap;  // -height/10^4 of the caster nearest the sun (
 uniform vec4 sunShadowTexel;     // 1/width, 1/height, width, height of sunShadowMap
 uniform vec3 sunDirection;    // world space, unit, pointing towards the sun
 uniform vec3 sunColour;       // linear RGB
-uniform float lightCount;
-uniform vec4 lightPositions[8];    // world space (OGRE light_position_array); w = 0: the sun, skipped
-uniform vec4 lightColours[8];      // OGRE light_diffuse_colour_array
-uniform vec4 lightAttenuations[8]; // x = range (OGRE light_attenuation_array)
+#include "level_shared.h"
+// The map's lights and the lights of each cell of a world grid (engine_ext/render/light_grid.h has
+// the layout), set per level by LevelGeometry (shared_params ObscuraLevelLights, level.program).
+uniform sampler2D levelLights;
+uniform vec4 lightGridOrigin;  // xyz: the grid's low corner (m); w: the cell edge (m)
+uniform vec4 lightGridSize;    // cells along x, y, z; w: the texture's width in texels
+uniform vec4 lightGridBases;   // x: the cells' first texel, y: the light numbers' first texel
 
 in vec3 vWorldPos;
 in vec3 vNormal;
@@ -27,6 +31,9 @@ in vec4 vShadowPos;
 uniform float hasAlbedo;
 // Fence textures (`{` names): texels with alpha below this are holes (0.5); 0 = opaque surfaces.
 uniform float alphaCutoff;
+
+// Integer division is scalar on llvmpipe (no SIMD divide): the width is a power of two, so shifts.
+ivec2 texel(int address, int width) { return ivec2(address & (LEVEL_LIGHT_ROW - 1), address >> LEVEL_LIGHT_ROW_LOG2); }
 
 // Fraction of the sun reaching this point: 2x2 percentage-closer filtering of the shadow map.
 float sunVisibility(float ndotl)
@@ -61,17 +68,57 @@ void main()
     if (sun > 0.0 && dot(sunColour, sunColour) > 0.0) visible = sunVisibility(max(ndotl, 0.0));
     light += sunColour * (sun * visible);
 
-    int count = int(lightCount);
-    for (int i = 0; i < 8; ++i) {
-        if (i >= count) break;
-        if (lightPositions[i].w == 0.0) continue;  // the sun: lit above, with its shadow
-        vec3 toLight = lightPositions[i].xyz - vWorldPos;
-        float dist = length(toLight);
-        float range = max(lightAttenuations[i].x, 1e-3);
-        float falloff = clamp(1.0 - dist / range, 0.0, 1.0);
-        float ndotp = max(dot(n, toLight / max(dist, 1e-4)), 0.0);
-        light += lightColours[i].rgb * (falloff * falloff * ndotp);
+    vec3 floorLight = vec3(0.0);  // delay 4 lights: a floor, not a sum
+    ivec3 cell = ivec3(floor((vWorldPos - lightGridOrigin.xyz) / lightGridOrigin.w));
+    ivec3 cells = ivec3(lightGridSize.xyz);
+    if (all(greaterThanEqual(cell, ivec3(0))) && all(lessThan(cell, cells))) {
+        int width = int(lightGridSize.w);
+        vec4 header = texelFetch(levelLights, texel(int(lightGridBases.x) + cell.x + cells.x * (cell.y + cells.y * cell.z), width), 0);
+        int first = int(lightGridBases.y) + int(header.x);
+        int count = int(header.y);
+        for (int k = 0; k < count; ++k) {
+            int base = LEVEL_LIGHT_TEXELS * int(texelFetch(levelLights, texel(first + k, width), 0).r);
+            vec4 place = texelFetch(levelLights, texel(base, width), 0);  // position, reach
+            vec3 toLight = place.xyz - vWorldPos;
+            float dist = length(toLight);
+            if (dist >= place.w) continue;  // beyond its reach
+            vec4 colour = texelFetch(levelLights, texel(base + 1, width), 0);  // irradiance at full strength, formula (+8: spot)
+            int formula = int(colour.w + 0.5);
+            bool spotlight = formula >= LEVEL_LIGHT_SPOT_FLAG;
+            formula -= spotlight ? LEVEL_LIGHT_SPOT_FLAG : 0;
+            if (formula == LEVEL_LIGHT_LOCAL_MINIMUM) {
+                floorLight = max(floorLight, colour.rgb);
+                continue;
+            }
+            vec3 dir = toLight / max(dist, 1e-4);
+            float cosine = dot(n, dir);
+            if (cosine <= 0.0) continue;  // behind the surface
+            vec4 shape = texelFetch(levelLights, texel(base + 2, width), 0);  // units a metre, gate, anglescale, exponent
+            float x = dist * shape.x;  // Quake's scaled distance, map units
+            float xi = max(x, LEVEL_MIN_INVERSE_DISTANCE);
+            float strength;
+            if (formula == LEVEL_LIGHT_LINEAR) {
+                strength = clamp(1.0 - dist / place.w, 0.0, 1.0);
+                if (shape.w != 1.0) strength = pow(strength, shape.w);  // pow is dear on llvmpipe: Quake's 1 skips it
+            } else if (formula == LEVEL_LIGHT_INVERSE) strength = LEVEL_INVERSE_SCALE / xi;
+            else if (formula == LEVEL_LIGHT_INVERSE_SQUARE) strength = LEVEL_INVERSE_SCALE * LEVEL_INVERSE_SCALE / (xi * xi);
+            else if (formula == LEVEL_LIGHT_INVERSE_SQUARE_A) {
+                float s = x + LEVEL_INVERSE_SCALE;
+                strength = LEVEL_INVERSE_SCALE * LEVEL_INVERSE_SCALE / (s * s);
+            } else strength = 1.0;
+            strength = max(strength - shape.y, 0.0);  // the inverse laws' gate (0 for the others)
+            strength *= (1.0 - shape.z) + shape.z * cosine;
+            if (spotlight) {
+                // The cone: 0 outside half its angle, a linear ramp in the cosine up to the soft cone.
+                vec4 spot = texelFetch(levelLights, texel(base + 3, width), 0);  // direction, cos of half the soft cone
+                float cosOuter = texelFetch(levelLights, texel(base + 4, width), 0).x;
+                float c = dot(spot.xyz, -dir);
+                strength *= spot.w > cosOuter ? clamp((c - cosOuter) / (spot.w - cosOuter), 0.0, 1.0) : step(cosOuter, c);
+            }
+            light += colour.rgb * strength;
+        }
     }
+    light = max(max(light, vec3(0.0)), floorLight);  // negative lights subtract, down to 0
 
     writeGBuffer(albedo, light, visible, vWorldPos, n);
 }

@@ -225,11 +225,15 @@ entity("info_player_start", origin=point(26, 24, 0.75), angle="135")  # courtyar
 SIGN = dict(x=44, y=32, z=4, width=5, height=1.5)
 entity("info_sign", origin=point(SIGN["x"], SIGN["y"], SIGN["z"]), angle="180", text="OBSCURA",
        width=str(SIGN["width"]), height=str(SIGN["height"]))
+# The arena's lamps keep the look they were tuned with before Quake's falloff was read: Lambert's
+# cosine (`_anglescale` 1, Quake's default is 0.5) and Quake's linear falloff squared (Obscura's
+# `_falloff_exponent` 2), which reaches 0 at the same `light` units but fades smoothly.
+LAMP = dict(_anglescale="1", _falloff_exponent="2")
 for x, y, z, l in [(6, 25, 3.5, 280), (12, 31, 3.5, 280), (9, 45, 5.5, 320), (9, 50, 2, 220),
                    (18, 28.25, 3, 200), (8.75, 36, 3, 200), (31.25, 14.5, 2.5, 220), (31.25, 22, 2.5, 200)]:
-    entity("light", origin=point(x, y, z), light=str(l), _color="1 0.92 0.8")  # warm indoor lamps
+    entity("light", origin=point(x, y, z), light=str(l), _color="1 0.92 0.8", **LAMP)  # warm indoor lamps
 for x in (16, 26, 36, 46):
-    entity("light", origin=point(x, 6, 4.5), light="300", _color="0.95 0.97 1")  # cool range strip lights
+    entity("light", origin=point(x, 6, 4.5), light="300", _color="0.95 0.97 1", **LAMP)  # cool range strip lights
 # The firing range: the shooter stands behind the booth counter (x < 14) looking east. Pop-up boards at
 # 10, 20 and 30 m (they fall when shot three times and rise after 3 s), two boards sliding across
 # the range at 15 and 25 m, all facing west (angle 180). Props to knock over by the booth.
@@ -248,7 +252,12 @@ WORLDSPAWN = [("classname", "worldspawn"), ("mapversion", "220"), ("message", "O
               # Sun from the north-north-west (travelling towards yaw -60), 55 degrees up: it lights
               # the sign wall (facing west) and lets the north wall shade part of the courtyard.
               ("_sunlight", "220"), ("_sun_mangle", "-60 -55 0"), ("_sunlight_color", "255 240 220"),
-              ("_sunlight2", "120"), ("_sunlight2_color", "200 215 255")]  # bluish sky-dome fill
+              ("_sunlight2", "120"), ("_sunlight2_color", "200 215 255"),  # bluish sky-dome fill
+              # The ambient hemisphere (Obscura's keys, linear irradiance from above and below) as
+              # the arena was tuned: the engine's old default hemisphere, halved from above, plus the
+              # dome (200 215 255)/255 x 120/375. Without them a level with lights gets Quake's
+              # dark ambient (engine_ext/map/README.md, "Lighting keys").
+              ("_ambient_sky", "0.41098039 0.44480392 0.53"), ("_ambient_ground", "0.16 0.14 0.12")]
 
 
 def write(out):
