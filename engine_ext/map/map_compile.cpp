@@ -112,6 +112,10 @@ bool isInvisibleTexture(const std::string& texture) {
 
 bool isLiquidTexture(const std::string& texture) { return !texture.empty() && texture[0] == '*'; }
 
+bool isMoverClass(const std::string& c) {
+    return c == "func_door" || c == "func_door_secret" || c == "func_plat" || c == "func_button" || c == "func_train";
+}
+
 namespace {
 // Compiles one entity: its point-entity meaning (player start, light, model) and its brushes.
 class EntityCompiler {
@@ -180,7 +184,7 @@ public:
         }
         if (startsWith(c, "light") && e.hasOrigin) addLight(me, e);
         if (c == "misc_model") addModel(me, e, static_cast<int>(index));
-        for (const MapBrush& mb : me.brushes) addBrush(mb, classify(c), static_cast<int>(index));
+        for (const MapBrush& mb : me.brushes) addBrush(mb, classify(c), static_cast<int>(index), isMoverClass(c));
         level_.entities.push_back(std::move(e));
     }
 
@@ -239,7 +243,7 @@ private:
         return size;
     }
 
-    void addBrush(const MapBrush& mb, BrushClass bc, int entityIndex) {
+    void addBrush(const MapBrush& mb, BrushClass bc, int entityIndex, bool mover) {
         BrushResult br = buildBrush(mb);
         if (!br.error.empty()) {
             warnAt(mb.pos, "brush skipped: " + br.error);
@@ -249,6 +253,7 @@ private:
         b.entityIndex = entityIndex;
         b.pos = mb.pos;
         b.solid = bc == BrushClass::Solid;
+        b.mover = mover;
         b.visible = false;
         for (const BrushPolygon& bp : br.polygons) {
             const MapFace& face = mb.faces[static_cast<std::size_t>(bp.faceIndex)];
