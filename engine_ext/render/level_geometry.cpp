@@ -28,6 +28,30 @@ bool isSky(const std::string& texture) {
 }
 
 
+// One section per material of the polygons, each a triangle fan (convex, counter-clockwise from
+// the front). Returns the triangles added.
+using ByMaterial = std::map<std::string, std::vector<const map::LevelPolygon*>>;
+std::size_t fill(Ogre::ManualObject& mo, const ByMaterial& byMaterial) {
+    std::size_t triangles = 0;
+    for (const auto& [material, polys] : byMaterial) {
+        mo.begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
+        Ogre::uint32 base = 0;
+        for (const auto* poly : polys) {
+            for (const auto& v : poly->vertices) {
+                mo.position(toOgre(v.position));
+                mo.normal(toOgre(v.normal));
+                mo.textureCoord(static_cast<float>(v.u), static_cast<float>(v.v));
+            }
+            const auto n = static_cast<Ogre::uint32>(poly->vertices.size());
+            for (Ogre::uint32 i = 1; i + 1 < n; ++i) mo.triangle(base, base + i, base + i + 1);
+            triangles += n - 2;
+            base += n;
+        }
+        mo.end();
+    }
+    return triangles;
+}
+
 // A Quake `light` of 300 (the default) is a bright bulb; this maps it to a diffuse colour of
 // about 1.5 at the light, which with the squared falloff in level.frag reads like Quake's lighting.
 constexpr double kLightColourPer300 = 1.5;
@@ -38,6 +62,7 @@ LevelGeometry::LevelGeometry(Ogre::SceneManager& scene, const map::Level& level,
     : scene_(scene) {
     node_ = scene_.getRootSceneNode()->createChildSceneNode();
     buildMeshes(level, materials, chunkSize);
+    buildMovers(level, materials);
     buildLights(level);
 }
 
@@ -50,9 +75,9 @@ LevelGeometry::~LevelGeometry() {
 
 void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize) {
     // chunk -> material -> polygons
-    std::map<ChunkKey, std::map<std::string, std::vector<const map::LevelPolygon*>>> chunks;
+    std::map<ChunkKey, ByMaterial> chunks;
     for (const auto& brush : level.brushes) {
-        if (!brush.visible) continue;
+        if (!brush.visible || brush.mover) continue;
         for (const auto& poly : brush.faces) {
             if (!poly.visible || poly.vertices.size() < 3) continue;
             Vec3 c;
@@ -68,28 +93,37 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
         auto* mo = scene_.createManualObject();
         mo->setCastShadows(!key.sky);  // into the sun's shadow map
         if (key.sky) mo->setVisibilityFlags(kSkyVisibilityFlag);
-        for (const auto& [material, polys] : byMaterial) {
-            mo->begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
-            Ogre::uint32 base = 0;
-            for (const auto* poly : polys) {
-                for (const auto& v : poly->vertices) {
-                    mo->position(toOgre(v.position));
-                    mo->normal(toOgre(v.normal));
-                    mo->textureCoord(static_cast<float>(v.u), static_cast<float>(v.v));
-                }
-                // Convex polygon, counter-clockwise from the front: a fan.
-                const auto n = static_cast<Ogre::uint32>(poly->vertices.size());
-                for (Ogre::uint32 i = 1; i + 1 < n; ++i) mo->triangle(base, base + i, base + i + 1);
-                stats_.triangles += n - 2;
-                base += n;
-            }
-            mo->end();
-            ++stats_.batches;
-        }
+        stats_.triangles += fill(*mo, byMaterial);
+        stats_.batches += byMaterial.size();
         node_->attachObject(mo);
         objects_.push_back(mo);
     }
     stats_.chunks = chunks.size();
+}
+
+void LevelGeometry::buildMovers(const map::Level& level, LevelMaterials& materials) {
+    std::map<int, ByMaterial> byMover;
+    for (const auto& brush : level.brushes) {
+        if (!brush.visible || !brush.mover) continue;
+        for (const auto& poly : brush.faces)
+            if (poly.visible && poly.vertices.size() >= 3) byMover[brush.entityIndex][materials.resolve(poly.texture)].push_back(&poly);
+    }
+    for (const auto& [entity, byMaterial] : byMover) {
+        auto* mo = scene_.createManualObject();
+        mo->setCastShadows(true);
+        mo->setVisibilityFlags(kMoverVisibilityFlag);
+        stats_.triangles += fill(*mo, byMaterial);
+        stats_.batches += byMaterial.size();
+        auto* n = node_->createChildSceneNode();
+        n->attachObject(mo);
+        objects_.push_back(mo);
+        movers_[entity] = n;
+    }
+}
+
+void LevelGeometry::setMoverOffset(int entityIndex, const Vec3& offset) {
+    const auto it = movers_.find(entityIndex);
+    if (it != movers_.end()) it->second->setPosition(toOgre(offset));
 }
 
 void LevelGeometry::buildLights(const map::Level& level) {

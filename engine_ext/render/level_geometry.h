@@ -7,6 +7,7 @@
 #include "map/level.h"
 
 #include <cstddef>
+#include <map>
 #include <vector>
 
 namespace Ogre {
@@ -30,6 +31,9 @@ struct LevelGeometryStats {
 // Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
 // that must not see the sky, such as the AO height map, mask it out.
 constexpr unsigned kSkyVisibilityFlag = 1u << 30;
+// Visibility flag of the movers' objects (doors, plats...): the AO height map, rendered once per
+// level, leaves them out (it would keep a door closed forever); the screen-space AO sees them.
+constexpr unsigned kMoverVisibilityFlag = 1u << 29;
 
 class LevelGeometry {
 public:
@@ -42,15 +46,21 @@ public:
     LevelGeometry& operator=(const LevelGeometry&) = delete;
 
     const LevelGeometryStats& stats() const { return stats_; }
+    // Moving brush entities (map::LevelBrush::mover) are not in the static chunks: each has its
+    // own object on its own node, placed here at its offset from where the level built it.
+    void setMoverOffset(int entityIndex, const Vec3& offset);
+    std::size_t moverCount() const { return movers_.size(); }
 
 private:
     void buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize);
+    void buildMovers(const map::Level& level, LevelMaterials& materials);
     void buildLights(const map::Level& level);
 
     Ogre::SceneManager& scene_;
     Ogre::SceneNode* node_ = nullptr;
     std::vector<Ogre::ManualObject*> objects_;
     std::vector<Ogre::Light*> lights_;
+    std::map<int, Ogre::SceneNode*> movers_;  // by entity index
     LevelGeometryStats stats_;
 };
 

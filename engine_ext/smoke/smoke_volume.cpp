@@ -63,7 +63,7 @@ SmokeVolume SmokeVolume::create(const map::Level& level, const std::vector<Trian
     s.centre = centre;
     voxelizeLevel(level, meshes, s.grid, s.voxelSolid);
     for (const auto& brush : level.brushes) {
-        if (!brush.solid || centre.x < brush.bounds.min.x || centre.y < brush.bounds.min.y ||
+        if (!brush.solid || brush.mover || centre.x < brush.bounds.min.x || centre.y < brush.bounds.min.y ||
             centre.z < brush.bounds.min.z || centre.x > brush.bounds.max.x || centre.y > brush.bounds.max.y ||
             centre.z > brush.bounds.max.z)
             continue;

@@ -162,6 +162,11 @@ void GameApp::load() {
     }
     const Vec3 towardSun = render::computeLevelLighting(level).sunDirection;
     session_ = std::make_unique<Session>(settings_, std::move(level), towardSun);
+    // The movers' and triggers' problems (a target naming nothing, a bad speed): the level still plays.
+    for (const auto& w : session_->sim().warnings()) Ogre::LogManager::getSingleton().logWarning(w);
+    if (!session_->sim().warnings().empty())
+        std::cerr << "obscura: " << session_->sim().warnings().size() << " mover/trigger warnings in " << settings_.level
+                  << " (see the log)\n";
 
     view_ = std::make_unique<RenderView>(RenderView::Context{*mRoot, *getRenderWindow(), *mOverlaySystem, *mShaderGenerator},
                                          settings_, *session_);

@@ -109,7 +109,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     // The heightfield mode's height map, over the level's brushes (models stand inside them).
     if (!level.bounds.empty())
         ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level.bounds.min), render::toOgre(level.bounds.max)),
-                            render::kSkyVisibilityFlag);
+                            render::kSkyVisibilityFlag | render::kMoverVisibilityFlag);
     applyAo(aoSettings(settings));
     if (settings.view != "scene") {
         frame_->setView(settings.view);
@@ -210,6 +210,11 @@ void RenderView::update(const Session& session, double alpha) {
     for (const auto& g : session.sim().grenades())
         poses.push_back({g.position, g.qx, g.qy, g.qz, g.qw, Vec3{g.radius, g.radius, g.radius}, Shape::Sphere, "metal"});
     props_->update(poses);
+    const sim::Movers& movers = session.sim().movers();
+    for (std::size_t i = 0; i < movers.count(); ++i) {
+        const Vec3 a = session.previousMoverOffsets().at(i), b = movers.offset(i);
+        levelGeometry_->setMoverOffset(movers.entityIndex(i), a + (b - a) * alpha);
+    }
     combat_->update(session.sim().targets());
 }
 
