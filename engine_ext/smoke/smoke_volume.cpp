@@ -169,32 +169,7 @@ void SmokeVolume::setMovingObstacles(const std::vector<MovingObstacle>& obstacle
                     if (inside && s.staticClass[c] == kFluid) cells.push_back({c, vx, vy, vz});
                 }
     }
-    // Seal, as initialiseState does for walls: fluid cells that the obstacles cut off from the
-    // centre (a door closed between two rooms) are solid this step. Otherwise the closed pressure
-    // problem has two regions (a second null space; the emitter's sink spread over both) and the
-    // solver's CG diverges to NaN. Smoke caught in a region as it is cut off is dropped (below).
-    if (!cells.empty() && s.staticClass[s.startCell] == kFluid) {
-        std::vector<std::uint8_t> blocked(g.cells(), 0);
-        for (const auto& dc : cells) blocked[dc.index] = 1;
-        if (!blocked[s.startCell]) {
-            std::vector<std::uint8_t> reached(g.cells(), 0);
-            std::vector<std::size_t> stack{s.startCell};
-            reached[s.startCell] = 1;
-            const std::ptrdiff_t step[6] = {-1, 1, -s.dims.sy, s.dims.sy, -s.dims.sz, s.dims.sz};
-            while (!stack.empty()) {
-                const std::size_t c = stack.back();
-                stack.pop_back();
-                for (std::ptrdiff_t o : step) {
-                    const std::size_t m = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + o);
-                    if (s.staticClass[m] != kFluid || blocked[m] || reached[m]) continue;
-                    reached[m] = 1;
-                    stack.push_back(m);
-                }
-            }
-            for (std::size_t c = 0; c < g.cells(); ++c)
-                if (s.staticClass[c] == kFluid && !blocked[c] && !reached[c]) cells.push_back({c, 0.f, 0.f, 0.f});
-        }
-    }
+    sealMovingObstacles(s, impl_->settings, cells);  // a door closed between two rooms
     // Planes touched by the old or the new set.
     int kMin = g.nz, kMax = -1;
     auto plane = [&](std::size_t c) { return static_cast<int>(c / static_cast<std::size_t>(s.dims.sz)); };

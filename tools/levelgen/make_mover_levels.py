@@ -2,10 +2,10 @@
 """Generates the movers' replay levels in tests/sim/levels/ (Valve-220 maps, 32 units a metre):
 
   door_button.map    two rooms and a wall between them; a 2 m doorway closed by a func_door
-                     (rises, angle -1, targetname door1, wait -1) and, right of it, a func_button
-                     (target door1) that the player walks into. tests/replay/scripts/door_button.replay
-                     throws a smoke grenade at the door first: the smoke stays in front of the closed
-                     door and goes through once it opens.
+                     (rises, angle -1, targetname door1, wait -1) and, on the far wall of the
+                     player's room, a func_button (target door1) that the player backs into.
+                     tests/replay/scripts/door_button.replay releases smoke in the other room: it
+                     stays behind the closed door and comes through once it opens.
   plat_teleport.map  a room with a 2 m ledge; a func_plat beside it rises when stood on; a
                      trigger_teleport on the ledge sends the player to an info_teleport_destination
                      at the far end, facing back (east). tests/replay/scripts/plat_teleport.replay.
@@ -67,19 +67,20 @@ class Map:
 
 def door_button(path):
     m = Map("Movers: a door opened by a button")
-    # Room A y 0..8, room B y 8.5..14.5, one shell around both; 4 m high.
-    m.shell(0, 0, 10, 14.5, 4)
+    # The smoke room y 0..8 (south), the player's room y 8.5..20.5 (north), one shell around both; 4 m high.
+    m.shell(0, 0, 10, 20.5, 4)
     # The wall between them (y 8..8.5) with a 2 m x 3 m doorway at x 4..6.
     m.add(box(0, 8, 0, 4, 8.5, 4, "brick"))
     m.add(box(6, 8, 0, 10, 8.5, 4, "brick"))
     m.add(box(4, 8, 3, 6, 8.5, 4, "brick"))
     # The door fills the doorway; it rises 96 - 8 = 88 u (2.75 m) into the lintel at 100 u/s.
     m.entity("func_door", [box(4, 8, 0, 6, 8.5, 3, "metal_door")], angle="-1", targetname="door1", wait="-1")
-    # The button: 0.5 m square, 0.25 m (8 u) out of the wall right of the door, pressed 4 u in.
-    m.entity("func_button", [box(6.5, 7.75, 1.0, 7.0, 8, 1.5, "button_red")], angle="90", target="door1")
-    m.entity("info_player_start", origin=point(6.75, 5, 0.75), angle="90")
-    m.entity("light", origin=point(5, 4, 3.5), light="320", _color="1 0.95 0.9")
-    m.entity("light", origin=point(5, 11.5, 3.5), light="320", _color="0.85 0.9 1")
+    # The button on the player's room's north wall: 0.5 m square, 0.25 m (8 u) out of the wall,
+    # pressed 4 u in (angle 90: north) by the player backing into it.
+    m.entity("func_button", [box(6.5, 20.25, 1.0, 7.0, 20.5, 1.5, "button_red")], angle="90", target="door1")
+    m.entity("info_player_start", origin=point(6.75, 19, 0.75), angle="270")
+    m.entity("light", origin=point(5, 4, 3.5), light="320", _color="1 0.9 0.8")
+    m.entity("light", origin=point(5, 14.5, 3.5), light="320", _color="0.85 0.9 1")
     m.write(path, ["Two rooms, a door between them that a button opens (see the script's docstring)."])
 
 
