@@ -39,6 +39,7 @@ Triggers::Triggers(const map::Level& level, double tickRate, const EntityKeys& k
             if (e.value("targetname") == name) return true;
         return false;
     };
+    std::vector<std::string> unsimulated;  // warned once a class, at its first entity
     for (std::size_t ei = 0; ei < level.entities.size(); ++ei) {
         const map::LevelEntity& e = level.entities[ei];
         for (const char* key : {"target", "killtarget"})
@@ -46,13 +47,17 @@ Triggers::Triggers(const map::Level& level, double tickRate, const EntityKeys& k
                 keys.warn(e, std::string("'") + key + "' '" + e.value(key) + "' names no entity");
         const std::string& c = e.classname;
         Trigger t;
-        if (c == "trigger_once") t.kind = Kind::Once;
+        if (c == "trigger_once" || c == "trigger_secret") t.kind = Kind::Once;  // trigger_secret: a once that counts a secret
         else if (c == "trigger_multiple") t.kind = Kind::Multiple;
         else if (c == "trigger_relay") t.kind = Kind::Relay;
+        else if (c == "trigger_counter") t.kind = Kind::Counter;
         else if (c == "trigger_teleport") t.kind = Kind::Teleport;
         else if (c == "trigger_push") t.kind = Kind::Push;
         else {
-            if (startsWith(c, "trigger_")) keys.warn(e, "is not simulated; ignored");
+            if (startsWith(c, "trigger_") && std::find(unsimulated.begin(), unsimulated.end(), c) == unsimulated.end()) {
+                unsimulated.push_back(c);
+                keys.warn(e, "is not simulated; this and every other " + c + " are ignored");
+            }
             continue;
         }
         t.entity = static_cast<int>(ei);
@@ -60,8 +65,10 @@ Triggers::Triggers(const map::Level& level, double tickRate, const EntityKeys& k
         for (const auto& b : level.brushes)
             if (b.entityIndex == t.entity) t.box.extend(b.bounds.min), t.box.extend(b.bounds.max);
         const int flags = keys.spawnflags(e);
-        t.touchable = t.kind != Kind::Relay && !t.box.empty();
-        if (t.kind != Kind::Relay && t.box.empty()) keys.warn(e, "has no brushes; it can never be touched");
+        const bool used = t.kind == Kind::Relay || t.kind == Kind::Counter;  // by name only, no volume
+        t.touchable = !used && !t.box.empty();
+        if (!used && t.box.empty()) keys.warn(e, "has no brushes; it can never be touched");
+        if (t.kind == Kind::Counter) t.count = std::max(1, static_cast<int>(keys.number(e, "count", 2)));
         if (t.kind == Kind::Once || t.kind == Kind::Multiple) {
             if (flags & kNoTouch) t.touchable = false;
             if (e.has("health")) keys.warn(e, "'health' (shootable triggers) is ignored");
@@ -108,7 +115,10 @@ void Triggers::use(const std::string& targetname, std::vector<int>& fired) {
         if (t.removed || t.targetname != targetname) continue;
         if (t.kind == Kind::Once || t.kind == Kind::Multiple) multiTrigger(t, fired);
         else if (t.kind == Kind::Relay) fired.push_back(t.entity);
-        else if (t.kind == Kind::Teleport) t.cooldown = std::max(1L, std::lround(kTeleportEnabled * tickRate_));
+        else if (t.kind == Kind::Counter && --t.count == 0) {  // counter_use: fires on the last use, once
+            t.removed = true;
+            fired.push_back(t.entity);
+        } else if (t.kind == Kind::Teleport) t.cooldown = std::max(1L, std::lround(kTeleportEnabled * tickRate_));
     }
 }
 
@@ -181,7 +191,8 @@ void Triggers::step(PlayerState& player, double radius, PhysicsWorld& physics, M
             player.velocity = t.push;
             if (t.pushOnce) t.removed = true;
             break;
-        case Kind::Relay: break;
+        case Kind::Relay:
+        case Kind::Counter: break;
         }
     }
     // Delayed firings that come due, oldest first.
@@ -197,6 +208,7 @@ void Triggers::hash(StateHasher& h) const {
     for (const auto& t : triggers_) {
         h.add(static_cast<std::uint64_t>(t.cooldown));
         h.add(t.removed);
+        h.add(static_cast<std::int32_t>(t.count));
     }
     for (const auto& p : pending_) {
         h.add(static_cast<std::uint64_t>(p.ticks));

@@ -1,5 +1,6 @@
-// Trigger volumes and target firing, as Quake's triggers.qc and subs.qc do them: trigger_once,
-// trigger_multiple (`wait` 0.2 s), trigger_relay, trigger_teleport (to the
+// Trigger volumes and target firing, as Quake's triggers.qc and subs.qc do them: trigger_once
+// (and trigger_secret, a once), trigger_multiple (`wait` 0.2 s), trigger_relay, trigger_counter
+// (fires on its `count`th use, default 2), trigger_teleport (to the
 // info_teleport_destination named by `target`), trigger_push (`angle`, `speed` x 10 u/s, as
 // QuakeC's trigger_push_touch). A trigger is the box around its brushes (Quake tests the
 // absmin/absmax boxes too) and fires when the player's box is in it. Firing an entity uses its
@@ -42,7 +43,7 @@ public:
     void hash(StateHasher& h) const;
 
 private:
-    enum class Kind { Once, Multiple, Relay, Teleport, Push };
+    enum class Kind { Once, Multiple, Relay, Counter, Teleport, Push };
     struct Trigger {
         Kind kind = Kind::Multiple;
         int entity = 0;
@@ -57,6 +58,7 @@ private:
         std::string targetname;
         // state
         long cooldown = 0;      // ticks until it may fire again (multi_wait); teleport: ticks it stays enabled
+        int count = 0;          // counter: uses still needed
         bool removed = false;
     };
     struct Pending {

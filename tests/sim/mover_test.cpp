@@ -307,3 +307,15 @@ TEST(Triggers, MultipleRefiresAfterItsWaitRelayDelayAndKilltarget) {
     run(s, {}, 10);
     EXPECT_LT(s.movers().offset(0).y, top);
 }
+
+TEST(Triggers, CounterFiresOnItsCountthUse) {
+    map::Level l = floorLevel();
+    addEntity(l, "func_door", {{"angle", "-1"}, {"targetname", "d"}, {"wait", "-1"}}, {kDoorBox});
+    addEntity(l, "trigger_counter", {{"targetname", "c"}, {"target", "d"}, {"count", "3"}});
+    addEntity(l, "trigger_multiple", {{"target", "c"}, {"wait", "0.5"}}, {{{-1, 0, -1}, {1, 2, 1}}});
+    Simulation s(l, startAt({0, 0, 0}));
+    run(s, {}, 60);  // used in ticks 1 and 31; the third use comes in tick 61
+    EXPECT_EQ(s.movers().offset(0), Vec3{});
+    run(s, {}, 2);
+    EXPECT_GT(s.movers().offset(0).y, 0) << "the third use fires it";
+}
