@@ -59,8 +59,9 @@ Vec3 EntityKeys::moveDirection(const map::LevelEntity& e) const {
     } else {
         yaw = number(e, "angle", 0);
     }
-    if (!e.has("angles") && yaw == -1) return {0, 1, 0};   // up
-    if (!e.has("angles") && yaw == -2) return {0, -1, 0};  // down
+    // SetMovedir's specials: angles '0 -1 0' (or angle -1) is up, '0 -2 0' down.
+    if (pitch == 0 && yaw == -1) return {0, 1, 0};
+    if (pitch == 0 && yaw == -2) return {0, -1, 0};
     const double p = pitch * kPi / 180, y = yaw * kPi / 180;
     // makevectors: forward = (cos p cos y, cos p sin y, -sin p) in Quake's axes.
     return normalize(fromQuake(std::cos(p) * std::cos(y), std::cos(p) * std::sin(y), -std::sin(p)));

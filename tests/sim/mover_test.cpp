@@ -319,3 +319,15 @@ TEST(Triggers, CounterFiresOnItsCountthUse) {
     run(s, {}, 2);
     EXPECT_GT(s.movers().offset(0).y, 0) << "the third use fires it";
 }
+
+TEST(Triggers, AnglesZeroMinusOneZeroIsUpAsAngleMinusOne) {
+    map::Level l = floorLevel();
+    addEntity(l, "trigger_push", {{"angles", "0 -1 0"}, {"speed", "40"}}, {{{-1, 0, -1}, {1, 0.5, 1}}});
+    addEntity(l, "trigger_push", {{"angles", "-90 0 0"}, {"speed", "40"}}, {{{4, 0, -1}, {6, 0.5, 1}}});  // pitched up
+    Simulation a(l, startAt({0, 0, 0})), b(l, startAt({5, 0, 0}));
+    a.step({});
+    b.step({});
+    EXPECT_DOUBLE_EQ(a.player().velocity.y, 40 * 10 / kUpm);
+    EXPECT_NEAR(b.player().velocity.y, 40 * 10 / kUpm, 1e-9);
+    EXPECT_NEAR(b.player().velocity.x, 0, 1e-9);
+}
