@@ -111,7 +111,6 @@ void LevelGeometry::buildMovers(const map::Level& level, LevelMaterials& materia
     for (const auto& [entity, byMaterial] : byMover) {
         auto* mo = scene_.createManualObject();
         mo->setCastShadows(true);
-        mo->setVisibilityFlags(kMoverVisibilityFlag);
         stats_.triangles += fill(*mo, byMaterial);
         stats_.batches += byMaterial.size();
         auto* n = node_->createChildSceneNode();

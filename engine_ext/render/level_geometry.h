@@ -31,9 +31,6 @@ struct LevelGeometryStats {
 // Visibility flag of the sky's batches (all other objects keep OGRE's default, every bit set): views
 // that must not see the sky, such as the AO height map, mask it out.
 constexpr unsigned kSkyVisibilityFlag = 1u << 30;
-// Visibility flag of the movers' objects (doors, plats...): the AO height map, rendered once per
-// level, leaves them out (it would keep a door closed forever); the screen-space AO sees them.
-constexpr unsigned kMoverVisibilityFlag = 1u << 29;
 
 class LevelGeometry {
 public:
