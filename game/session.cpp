@@ -81,13 +81,18 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
       smoke_(level_, colliders_, towardSun, settings.tickRate, settings.smokeResolution),
       decals_(settings, level_, modelSearchDirs(settings), sim_),
       previousPlayer_(sim_.player()) {
+    for (std::size_t i = 0; i < sim_.movers().count(); ++i) previousMoverOffsets_.push_back(sim_.movers().offset(i));
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
 }
 
 void Session::step(const sim::PlayerCommand& cmd) {
     previousPlayer_ = sim_.player();
+    for (std::size_t i = 0; i < previousMoverOffsets_.size(); ++i) previousMoverOffsets_[i] = sim_.movers().offset(i);
     sim_.step(cmd);
     const auto& events = sim_.events();
+    // A teleport is a cut: the view does not glide from the old place to the new one.
+    for (const auto& e : events)
+        if (e.type == sim::SimEventType::Teleport) previousPlayer_ = sim_.player();
     smoke_.onTick(events, sim_);
     decals_.onTick(events, sim_);
     hitMarker_ = std::max(0.0, hitMarker_ - durations_.hitMarkerFadePerTick);

@@ -50,6 +50,8 @@ public:
     const TickDurations& durations() const { return durations_; }
     // The player before the last tick (the view interpolates from it to sim().player()).
     const sim::PlayerState& previousPlayer() const { return previousPlayer_; }
+    // The movers' offsets before the last tick (sim().movers() order), for the same interpolation.
+    const std::vector<Vec3>& previousMoverOffsets() const { return previousMoverOffsets_; }
     double hitMarker() const { return hitMarker_; }
 
 private:
@@ -60,6 +62,7 @@ private:
     GameSmoke smoke_;
     GameDecals decals_;
     sim::PlayerState previousPlayer_;
+    std::vector<Vec3> previousMoverOffsets_;
     double hitMarker_ = 0;  // 1 at a hit, fading over kHitMarkerFadeSeconds
 };
 

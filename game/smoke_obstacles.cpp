@@ -30,6 +30,19 @@ std::vector<smoke::MovingObstacle> smokeObstacles(const sim::Simulation& sim) {
         prop.velocity = b.velocity;
         out.push_back(prop);
     }
+    // Movers: each brush's box where it is now, moving at the mover's velocity (doors and plats
+    // are axis-aligned boxes, for which the box is the brush).
+    const sim::Movers& movers = sim.movers();
+    for (std::size_t i = 0; i < movers.count(); ++i) {
+        for (const auto& b : movers.brushBounds(i)) {
+            smoke::MovingObstacle m;
+            m.shape = Shape::Box;
+            m.centre = (b.min + b.max) * 0.5 + movers.offset(i);
+            m.halfExtents = (b.max - b.min) * 0.5;
+            m.velocity = movers.velocity(i);
+            out.push_back(m);
+        }
+    }
     for (const auto& g : sim.grenades()) {
         smoke::MovingObstacle grenade;
         grenade.shape = Shape::Sphere;

@@ -12,7 +12,8 @@ namespace obscura {
 
 // The player (a box the size of the capsule), every prop (the axis-aligned box around it as it
 // lies: the solver's boxes do not rotate) and every grenade (a sphere), with their velocities.
-// Props at rest are obstacles too: smoke flows around a crate instead of through it.
+// Props at rest are obstacles too: smoke flows around a crate instead of through it. So is every
+// mover's brush (its box where the mover is now): a closed door holds the smoke, an open one not.
 std::vector<smoke::MovingObstacle> smokeObstacles(const sim::Simulation& sim);
 
 }  // namespace obscura

@@ -64,6 +64,10 @@ struct LevelBrush {
     LiquidKind liquid = LiquidKind::None;  // a liquid volume (non-solid, drawn two-sided)
     double liquidAlpha = 1;                // its opacity, 0..1 (map/liquid.h: the alpha keys)
     int entityIndex = 0;  // index into Level::entities (0 = worldspawn)
+    // Belongs to a moving brush entity (func_door, func_door_secret, func_plat, func_button,
+    // func_train: isMoverClass): solid, but not part of the static world. Physics, rendering and
+    // the smoke's voxels leave it out of the world and treat its entity's brushes as one mover.
+    bool mover = false;
     SourcePos pos;        // where the brush opens in the .map
 };
 

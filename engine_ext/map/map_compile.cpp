@@ -118,6 +118,10 @@ bool isInvisibleTexture(const std::string& texture) {
 
 bool isLiquidTexture(const std::string& texture) { return !texture.empty() && texture[0] == '*'; }
 
+bool isMoverClass(const std::string& c) {
+    return c == "func_door" || c == "func_door_secret" || c == "func_plat" || c == "func_button" || c == "func_train";
+}
+
 namespace {
 // Compiles one entity: its point-entity meaning (player start, model) and its brushes (lights: map_lights.cpp).
 class EntityCompiler {
@@ -187,7 +191,7 @@ public:
         }
         if (known && known->role == EntityRole::Model) addModel(me, e, static_cast<int>(index));
         current_ = e;  // its keys, for the liquid alpha of its brushes (pushed after them)
-        for (const MapBrush& mb : me.brushes) addBrush(mb, brushRole(known, c), static_cast<int>(index));
+        for (const MapBrush& mb : me.brushes) addBrush(mb, brushRole(known, c), static_cast<int>(index), isMoverClass(c));
         level_.entities.push_back(std::move(e));
     }
 
@@ -239,7 +243,7 @@ private:
         return size;
     }
 
-    void addBrush(const MapBrush& mb, BrushRole role, int entityIndex) {
+    void addBrush(const MapBrush& mb, BrushRole role, int entityIndex, bool mover) {
         BrushResult br = buildBrush(mb);
         if (!br.error.empty()) {
             warnAt(mb.pos, "brush skipped: " + br.error);
@@ -249,6 +253,7 @@ private:
         b.entityIndex = entityIndex;
         b.pos = mb.pos;
         b.solid = role == BrushRole::Solid;
+        b.mover = mover;
         b.visible = false;
         double q2Alpha = 1;  // Quake 2 SURF_TRANS33/66 on a liquid face
         for (const BrushPolygon& bp : br.polygons) {

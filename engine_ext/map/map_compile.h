@@ -44,5 +44,7 @@ Level loadLevel(const std::string& path, const CompileOptions& options = {}, std
 // Texture classes (case-insensitive), exposed for tests and other systems.
 bool isInvisibleTexture(const std::string& texture);  // clip, trigger, skip, hint, nodraw, caulk, common/*
 bool isLiquidTexture(const std::string& texture);     // *water, *lava, *slime, *tele...
+// Moving brush entities: func_door, func_door_secret, func_plat, func_button, func_train.
+bool isMoverClass(const std::string& classname);
 
 }  // namespace obscura::map

@@ -47,6 +47,36 @@ double levelSize(const map::Level& level) {
 
 // OGRE takes a light's reach as a float range; a light that reaches nothing still needs a positive one.
 constexpr double kMinLightRange = 1e-3;
+
+// One section per material of the faces, each a triangle fan (convex, counter-clockwise from the
+// front); a two-sided face (liquids) again, reversed and facing in. Returns the triangles added.
+using ByMaterial = std::map<std::string, std::vector<Face>>;
+std::size_t fill(Ogre::ManualObject& mo, const ByMaterial& byMaterial) {
+    std::size_t triangles = 0;
+    for (const auto& [material, faces] : byMaterial) {
+        mo.begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
+        Ogre::uint32 base = 0;
+        for (const Face& f : faces) {
+            for (int side = 0; side < (f.twoSided ? 2 : 1); ++side) {
+                const float flip = side == 0 ? 1.0f : -1.0f;
+                for (const auto& v : f.poly->vertices) {
+                    mo.position(toOgre(v.position));
+                    mo.normal(toOgre(v.normal) * flip);
+                    mo.textureCoord(static_cast<float>(v.u), static_cast<float>(v.v));
+                }
+                const auto n = static_cast<Ogre::uint32>(f.poly->vertices.size());
+                for (Ogre::uint32 i = 1; i + 1 < n; ++i) {
+                    if (side == 0) mo.triangle(base, base + i, base + i + 1);
+                    else mo.triangle(base, base + i + 1, base + i);
+                }
+                triangles += n - 2;
+                base += n;
+            }
+        }
+        mo.end();
+    }
+    return triangles;
+}
 }  // namespace
 
 LevelGeometry::LevelGeometry(Ogre::SceneManager& scene, const map::Level& level, LevelMaterials& materials,
@@ -54,6 +84,7 @@ LevelGeometry::LevelGeometry(Ogre::SceneManager& scene, const map::Level& level,
     : scene_(scene) {
     node_ = scene_.getRootSceneNode()->createChildSceneNode();
     buildMeshes(level, materials, chunkSize);
+    buildMovers(level, materials);
     buildLights(level);
     buildLightGrid(level);
 }
@@ -68,9 +99,9 @@ LevelGeometry::~LevelGeometry() {
 
 void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize) {
     // chunk -> material -> polygons
-    std::map<ChunkKey, std::map<std::string, std::vector<Face>>> chunks;
+    std::map<ChunkKey, ByMaterial> chunks;
     for (const auto& brush : level.brushes) {
-        if (!brush.visible) continue;
+        if (!brush.visible || brush.mover) continue;  // movers: their own nodes (buildMovers)
         const bool liquid = brush.liquid != map::LiquidKind::None;
         const bool translucent = liquid && brush.liquidAlpha < 1.0;
         for (const auto& poly : brush.faces) {
@@ -96,34 +127,36 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
             mo->setVisibilityFlags(kLiquidVisibilityFlag);
             ++stats_.liquidBatches;
         }
-        for (const auto& [material, faces] : byMaterial) {
-            mo->begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
-            Ogre::uint32 base = 0;
-            for (const Face& f : faces) {
-                for (int side = 0; side < (f.twoSided ? 2 : 1); ++side) {
-                    const float flip = side == 0 ? 1.0f : -1.0f;
-                    for (const auto& v : f.poly->vertices) {
-                        mo->position(toOgre(v.position));
-                        mo->normal(toOgre(v.normal) * flip);
-                        mo->textureCoord(static_cast<float>(v.u), static_cast<float>(v.v));
-                    }
-                    // Convex polygon, counter-clockwise from the front: a fan (the back: reversed).
-                    const auto n = static_cast<Ogre::uint32>(f.poly->vertices.size());
-                    for (Ogre::uint32 i = 1; i + 1 < n; ++i) {
-                        if (side == 0) mo->triangle(base, base + i, base + i + 1);
-                        else mo->triangle(base, base + i + 1, base + i);
-                    }
-                    stats_.triangles += n - 2;
-                    base += n;
-                }
-            }
-            mo->end();
-            ++stats_.batches;
-        }
+        stats_.triangles += fill(*mo, byMaterial);
+        stats_.batches += byMaterial.size();
         node_->attachObject(mo);
         objects_.push_back(mo);
     }
     stats_.chunks = chunks.size();
+}
+
+void LevelGeometry::buildMovers(const map::Level& level, LevelMaterials& materials) {
+    std::map<int, ByMaterial> byMover;
+    for (const auto& brush : level.brushes) {
+        if (!brush.visible || !brush.mover) continue;
+        for (const auto& poly : brush.faces)
+            if (poly.visible && poly.vertices.size() >= 3) byMover[brush.entityIndex][materials.resolve(poly.texture, poly.sky)].push_back({&poly, false});
+    }
+    for (const auto& [entity, byMaterial] : byMover) {
+        auto* mo = scene_.createManualObject();
+        mo->setCastShadows(true);
+        stats_.triangles += fill(*mo, byMaterial);
+        stats_.batches += byMaterial.size();
+        auto* n = node_->createChildSceneNode();
+        n->attachObject(mo);
+        objects_.push_back(mo);
+        movers_[entity] = n;
+    }
+}
+
+void LevelGeometry::setMoverOffset(int entityIndex, const Vec3& offset) {
+    const auto it = movers_.find(entityIndex);
+    if (it != movers_.end()) it->second->setPosition(toOgre(offset));
 }
 
 void LevelGeometry::buildLights(const map::Level& level) {

@@ -14,6 +14,7 @@
 #include <OgreTexture.h>
 
 #include <cstddef>
+#include <map>
 #include <vector>
 
 namespace Ogre {
@@ -55,9 +56,14 @@ public:
     LevelGeometry& operator=(const LevelGeometry&) = delete;
 
     const LevelGeometryStats& stats() const { return stats_; }
+    // Moving brush entities (map::LevelBrush::mover) are not in the static chunks: each has its
+    // own object on its own node, placed here at its offset from where the level built it.
+    void setMoverOffset(int entityIndex, const Vec3& offset);
+    std::size_t moverCount() const { return movers_.size(); }
 
 private:
     void buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize);
+    void buildMovers(const map::Level& level, LevelMaterials& materials);
     void buildLights(const map::Level& level);
     void buildLightGrid(const map::Level& level);
 
@@ -66,6 +72,7 @@ private:
     std::vector<Ogre::ManualObject*> objects_;
     std::vector<Ogre::Light*> lights_;
     Ogre::TexturePtr lightTexture_;
+    std::map<int, Ogre::SceneNode*> movers_;  // by entity index
     LevelGeometryStats stats_;
 };
 

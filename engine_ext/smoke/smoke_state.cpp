@@ -67,6 +67,21 @@ void chooseEmitterCells(SmokeState& s, const SmokeSettings& st) {
 
 }  // namespace
 
+namespace {
+// The expansion (1/s) per cell: the emitter's cells add emitterRate; a closed region absorbs the
+// emission uniformly over its `cells` fluid cells (`inRegion`), so the sources sum to 0.
+template <class InRegion>
+void makeSources(SmokeState& s, const SmokeSettings& st, InRegion inRegion, std::size_t cells) {
+    const double h3 = s.grid.cellSize * s.grid.cellSize * s.grid.cellSize;
+    const double sink = s.regionOpen || cells == 0 ? 0.0 : st.emitGasRate / (static_cast<double>(cells) * h3);
+    s.source.assign(s.grid.cells(), 0.f);
+    for (std::size_t c = 0; c < s.source.size(); ++c)
+        if (inRegion(c)) s.source[c] = static_cast<float>(-sink);
+    for (std::size_t c : s.emitterList)
+        if (inRegion(c)) s.source[c] = static_cast<float>(static_cast<double>(s.emitterRate) - sink);
+}
+}  // namespace
+
 void initialiseState(SmokeState& s, const SmokeSettings& st) {
     const GridInfo& g = s.grid;
     const std::size_t n = g.cells();
@@ -108,14 +123,10 @@ void initialiseState(SmokeState& s, const SmokeSettings& st) {
     }
 
     chooseEmitterCells(s, st);
-    // The expansion (1/s) per cell; a closed region absorbs it uniformly (sum of sources = 0).
-    s.source.assign(n, 0.f);
     const double h3 = g.cellSize * g.cellSize * g.cellSize;
     s.emitterRate = static_cast<float>(st.emitGasRate / (static_cast<double>(s.emitterCells) * h3));
-    const double sink = s.regionOpen ? 0.0 : st.emitGasRate / (static_cast<double>(s.fluidCells) * h3);
-    for (std::size_t c = 0; c < n; ++c)
-        if (s.staticClass[c] == kFluid) s.source[c] = static_cast<float>(-sink);
-    for (std::size_t c : s.emitterList) s.source[c] = static_cast<float>(static_cast<double>(s.emitterRate) - sink);
+    s.staticRegionOpen = s.regionOpen;
+    makeSources(s, st, [&](std::size_t c) { return s.staticClass[c] == kFluid; }, s.fluidCells);
 
     for (auto* f : {&s.density, &s.temperature, &s.u, &s.v, &s.w, &s.pressure, &s.rhs, &s.pressureTmp, &s.diagInv, &s.outflow})
         f->assign(n, 0.f);
@@ -269,6 +280,50 @@ void patchDynamicFaces(SmokeState& s) {
         if (s.staticClass[c - sz] != kSolid) s.w[c] = dc.vz;
         if (s.staticClass[c + sz] != kSolid) s.w[c + sz] = dc.vz;
     }
+}
+
+}  // namespace obscura::smoke
+
+namespace obscura::smoke {
+
+void sealMovingObstacles(SmokeState& s, const SmokeSettings& st, std::vector<DynamicCell>& cells) {
+    const std::size_t n = s.grid.cells();
+    std::vector<std::uint8_t> mark(n, 0);  // 1 covered, 2 reached from the centre
+    for (const auto& dc : cells) mark[dc.index] = 1;
+    bool open = false;
+    std::size_t reachedCells = 0;
+    if (s.staticClass[s.startCell] == kFluid && mark[s.startCell] == 0) {
+        std::vector<std::size_t> stack{s.startCell};
+        mark[s.startCell] = 2;
+        const std::ptrdiff_t off[6] = {-1, 1, -s.dims.sy, s.dims.sy, -s.dims.sz, s.dims.sz};
+        while (!stack.empty()) {
+            const std::size_t c = stack.back();
+            stack.pop_back();
+            ++reachedCells;
+            for (std::ptrdiff_t o : off) {
+                const std::size_t m = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(c) + o);
+                if (s.staticClass[m] == kOpen) open = true;
+                if (s.staticClass[m] != kFluid || mark[m] != 0) continue;
+                mark[m] = 2;
+                stack.push_back(m);
+            }
+        }
+    } else {
+        return;  // an obstacle on the centre itself: leave the region as the walls make it
+    }
+    const std::size_t before = cells.size();
+    for (std::size_t c = 0; c < n; ++c)
+        if (s.staticClass[c] == kFluid && mark[c] == 0) cells.push_back({c, 0.f, 0.f, 0.f});
+    const bool changed = cells.size() != before || open != s.staticRegionOpen;
+    if (!changed && !s.sourceResealed) return;  // as initialiseState made it: untouched
+    s.regionOpen = open;
+    if (changed) {
+        makeSources(s, st, [&](std::size_t c) { return mark[c] == 2; }, reachedCells);
+    } else {
+        s.regionOpen = s.staticRegionOpen;
+        makeSources(s, st, [&](std::size_t c) { return s.staticClass[c] == kFluid; }, s.fluidCells);
+    }
+    s.sourceResealed = changed;
 }
 
 }  // namespace obscura::smoke

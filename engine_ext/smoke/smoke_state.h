@@ -69,6 +69,8 @@ struct SmokeState {
     std::size_t startCell = 0;  // the free cell nearest the centre: the flood fill's and emitter's seed
     Vec3 emitterCentre;
     bool regionOpen = false;  // the centre's fluid region reaches an open border cell
+    bool staticRegionOpen = false;  // regionOpen as the walls alone make it (sealMovingObstacles changes regionOpen)
+    bool sourceResealed = false;    // `source` is sealMovingObstacles' rather than initialiseState's
     std::size_t fluidCells = 0, emitterCells = 0;
     std::vector<std::size_t> emitterList;  // the emitter's cells (see initialiseState), nearest first
     float emitterRate = 0;  // volume source per emitter cell (1/s): emitGasRate / (cells x h^3)
@@ -86,6 +88,14 @@ struct SmokeState {
 void initialiseState(SmokeState& s, const SmokeSettings& settings);
 // Recomputes cellClass, faceMask and diagInv for z-planes [k0, k1] from staticClass + dynamicCells.
 void rebuildDerived(SmokeState& s, int k0, int k1);
+// Moving obstacles (`cells`, about to become s.dynamicCells) can cut the centre's region apart (a
+// door closed between two rooms): the fluid cells no longer 6-connected to the centre are
+// appended to `cells` (solid for the step, at rest), and when that leaves the region closed
+// although the walls alone left it open (or the other way), or seals anything, the sources are
+// made again for the region as it is now (a closed region absorbs the emission uniformly). Without
+// this the pressure problem has a second closed region or an incompatible source and CG diverges.
+// Costs one flood fill of the grid.
+void sealMovingObstacles(SmokeState& s, const SmokeSettings& settings, std::vector<DynamicCell>& cells);
 
 // One solver substep of dt seconds (emitter, advection, forces, projection, dissipation).
 // The fast path uses `pool`; the reference path is single-threaded with plain loops.

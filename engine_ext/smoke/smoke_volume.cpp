@@ -63,7 +63,7 @@ SmokeVolume SmokeVolume::create(const map::Level& level, const std::vector<Trian
     s.centre = centre;
     voxelizeLevel(level, meshes, s.grid, s.voxelSolid);
     for (const auto& brush : level.brushes) {
-        if (!brush.solid || centre.x < brush.bounds.min.x || centre.y < brush.bounds.min.y ||
+        if (!brush.solid || brush.mover || centre.x < brush.bounds.min.x || centre.y < brush.bounds.min.y ||
             centre.z < brush.bounds.min.z || centre.x > brush.bounds.max.x || centre.y > brush.bounds.max.y ||
             centre.z > brush.bounds.max.z)
             continue;
@@ -169,6 +169,7 @@ void SmokeVolume::setMovingObstacles(const std::vector<MovingObstacle>& obstacle
                     if (inside && s.staticClass[c] == kFluid) cells.push_back({c, vx, vy, vz});
                 }
     }
+    sealMovingObstacles(s, impl_->settings, cells);  // a door closed between two rooms
     // Planes touched by the old or the new set.
     int kMin = g.nz, kMax = -1;
     auto plane = [&](std::size_t c) { return static_cast<int>(c / static_cast<std::size_t>(s.dims.sz)); };

@@ -165,7 +165,9 @@ void voxelizeLevel(const map::Level& level, const std::vector<TriangleMesh>& mes
                 }
     };
     for (const auto& brush : level.brushes) {
-        if (!brush.solid) continue;
+        // Movers (doors, plats) are not static: the game passes them as moving obstacles where
+        // they are now (game/smoke_obstacles.cpp), so an open door lets the smoke through.
+        if (!brush.solid || brush.mover) continue;
         const ConvexHull hull = makeHull(brush);
         int lo[3], hi[3];
         if (hull.points.empty() || !cellRange(hull.bounds, lo, hi)) continue;

@@ -43,7 +43,7 @@ bool boxOverlapsTriangle(const Vec3& boxMin, const Vec3& boxMax, const Vec3& a, 
                          double epsilon);
 
 // Marks solid cells in `solid` (grid.cells() bytes, 0 = free): kVoxelBuilt for cells overlapping
-// solid brushes and mesh triangles, kVoxelOutside for cells whose centre lies outside the level's
+// solid brushes (not movers' brushes: they move, see LevelBrush::mover) and mesh triangles, kVoxelOutside for cells whose centre lies outside the level's
 // bounds (not built, but no smoke may go there). The flight to the light (self-shadow) is blocked
 // by built cells only: above an open level's bounds is sky.
 constexpr std::uint8_t kVoxelBuilt = 1;

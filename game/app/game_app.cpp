@@ -161,12 +161,18 @@ void GameApp::load() {
     const auto t0 = std::chrono::steady_clock::now();
     session_ = std::make_unique<Session>(settings_, std::move(level), towardSun);
     const auto t1 = std::chrono::steady_clock::now();
+    // The movers' and triggers' problems (a target naming nothing, a bad speed), file:line like the
+    // map's: the level still plays.
+    const std::vector<std::string>& simWarnings = session_->sim().warnings();
+    for (const auto& w : simWarnings) Ogre::LogManager::getSingleton().logWarning(w);
+    for (const auto& line : map::warningLines(simWarnings)) std::cerr << line << "
+";
 
     view_ = std::make_unique<RenderView>(RenderView::Context{*mRoot, *getRenderWindow(), *mOverlaySystem, *mShaderGenerator},
                                          settings_, *session_);
     times.sessionMs = std::chrono::duration<double, std::milli>(t1 - t0).count();
     times.sceneMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
-    const std::string summary = map::summaryLine(session_->level(), warnings.size(), times);
+    const std::string summary = map::summaryLine(session_->level(), warnings.size() + simWarnings.size(), times);
     Ogre::LogManager::getSingleton().logMessage(summary);
     std::cerr << summary << "\n";
     // Sounds load once, here (a malformed WAV stops the game at load time, naming the file); with

@@ -109,10 +109,17 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     frame_->add(*decals_);
     frame_->add(*ao_);
     frame_->add(*smoke_);
-    // The heightfield mode's height map, over the level's brushes (models stand inside them).
+    // The heightfield mode's height map, over the level's brushes (models stand inside them), with
+    // the movers where the simulation starts them.
     if (!level.bounds.empty())
-        ao_->buildHeightMap(*scene_, Ogre::AxisAlignedBox(render::toOgre(level.bounds.min), render::toOgre(level.bounds.max)),
-                            render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
+        heightBounds_ = Ogre::AxisAlignedBox(render::toOgre(level.bounds.min), render::toOgre(level.bounds.max));
+    const sim::Movers& movers = session.sim().movers();
+    for (std::size_t i = 0; i < movers.count(); ++i) {
+        levelGeometry_->setMoverOffset(movers.entityIndex(i), movers.offset(i));
+        bakedMoverOffsets_.push_back(movers.offset(i));
+    }
+    latestMoverOffsets_ = bakedMoverOffsets_;
+    if (!heightBounds_.isNull()) ao_->buildHeightMap(*scene_, heightBounds_, render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
     applyAo(aoSettings(settings));
     if (settings.view != "scene") {
         frame_->setView(settings.view);
@@ -161,6 +168,8 @@ void RenderView::applyAo(const AoSettings& a) {
     k.resolution = a.resolution;
     ao_->setKnobs(k);
     ao_->setMode(a.mode);  // the frame rebuilds its chain at the next frame
+    aoMode_ = a.mode;
+    rebakeHeightMapIfStale();
     if (a.aoOnly) frame_->setView("ao");
     else if (frame_->view() == "ao") frame_->setView("scene");
     frame_->setExposure(static_cast<float>(a.exposure));
@@ -213,7 +222,26 @@ void RenderView::update(const Session& session, double alpha) {
     for (const auto& g : session.sim().grenades())
         poses.push_back({g.position, g.qx, g.qy, g.qz, g.qw, Vec3{g.radius, g.radius, g.radius}, Shape::Sphere, "metal"});
     props_->update(poses);
+    const sim::Movers& movers = session.sim().movers();
+    bool resting = true;
+    for (std::size_t i = 0; i < movers.count(); ++i) {
+        const Vec3 a = session.previousMoverOffsets().at(i), b = movers.offset(i);
+        levelGeometry_->setMoverOffset(movers.entityIndex(i), a + (b - a) * alpha);
+        resting &= a == b;
+        latestMoverOffsets_.at(i) = b;
+        heightMapStale_ |= b != bakedMoverOffsets_.at(i);
+    }
+    // The baked AO height map follows the movers once they have all come to rest (a door open).
+    if (resting) rebakeHeightMapIfStale();
     combat_->update(session.sim().targets());
+}
+
+void RenderView::rebakeHeightMapIfStale() {
+    // Only the heightfield mode reads the map; another mode bakes when it switches to it.
+    if (!heightMapStale_ || aoMode_ != "heightfield" || heightBounds_.isNull()) return;
+    ao_->buildHeightMap(*scene_, heightBounds_, render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
+    bakedMoverOffsets_ = latestMoverOffsets_;
+    heightMapStale_ = false;
 }
 
 RenderView::Listener RenderView::listener() const {

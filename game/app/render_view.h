@@ -10,6 +10,7 @@
 #include "sim/sim_events.h"
 
 #include <OgrePrerequisites.h>
+#include <OgreAxisAlignedBox.h>
 #include <OgreTexture.h>
 
 #include <memory>
@@ -98,6 +99,9 @@ public:
 
 private:
     Ogre::RenderTarget& target();
+    // Bakes the AO height map again when the movers rest elsewhere than at the last bake and the
+    // heightfield mode (the one that reads it) is on.
+    void rebakeHeightMapIfStale();
 
     Ogre::Root& root_;
     Ogre::RenderWindow& window_;
@@ -120,6 +124,10 @@ private:
     std::unique_ptr<CombatView> combat_;
     std::unique_ptr<render::Hud> hud_;
     std::uint64_t smokeUploaded_ = 0;  // GameSmoke::version() of the fields on the GPU
+    Ogre::AxisAlignedBox heightBounds_;  // the AO height map's box (null: no brushes)
+    std::string aoMode_;
+    std::vector<Vec3> bakedMoverOffsets_, latestMoverOffsets_;  // sim().movers() order
+    bool heightMapStale_ = false;
 };
 
 }  // namespace obscura

@@ -105,13 +105,14 @@ PhysicsWorld::~PhysicsWorld() {
     // Bodies leave the world before it dies; the members then die bodies first, shapes and meshes
     // after them, the world and its parts last (reverse declaration order).
     for (auto& [id, p] : projectiles_) world_->removeRigidBody(p.body.get());
+    for (auto it = kinematic_.rbegin(); it != kinematic_.rend(); ++it) world_->removeRigidBody(it->get());
     for (auto it = dynamic_.rbegin(); it != dynamic_.rend(); ++it) world_->removeRigidBody(it->get());
     for (auto it = static_.rbegin(); it != static_.rend(); ++it) world_->removeRigidBody(it->get());
 }
 
 void PhysicsWorld::addLevel(const map::Level& level) {
     for (const auto& b : level.brushes)
-        if (b.solid) addStaticHull(b.hullPoints, where(level, b.pos));
+        if (b.solid && !b.mover) addStaticHull(b.hullPoints, where(level, b.pos));
     for (const auto& e : level.entities) {
         if (e.classname != "prop_crate" && e.classname != "prop_barrel") continue;
         if (!e.hasOrigin) throw SimError(where(level, e.pos) + ": " + e.classname + " without an 'origin'");
@@ -136,7 +137,7 @@ void PhysicsWorld::addStatic(std::unique_ptr<btCollisionShape> shape) {
     shapes_.push_back(std::move(shape));
 }
 
-void PhysicsWorld::addStaticHull(const std::vector<Vec3>& points, const std::string& whereFrom) {
+std::unique_ptr<btConvexHullShape> PhysicsWorld::makeHull(const std::vector<Vec3>& points, const std::string& whereFrom) const {
     map::Aabb box;
     for (const auto& p : points) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -154,7 +155,41 @@ void PhysicsWorld::addStaticHull(const std::vector<Vec3>& points, const std::str
     hull->recalcLocalAabb();
     hull->setMargin(kHullMargin);
     hull->initializePolyhedralFeatures();
-    addStatic(std::move(hull));
+    return hull;
+}
+
+void PhysicsWorld::addStaticHull(const std::vector<Vec3>& points, const std::string& whereFrom) {
+    addStatic(makeHull(points, whereFrom));
+}
+
+int PhysicsWorld::addKinematicHulls(const std::vector<std::vector<Vec3>>& hulls, int userIndex, const std::string& whereFrom) {
+    // One child per brush at the identity: the hulls keep their world-space points, and the
+    // body's transform is the mover's offset from where the level was built.
+    auto compound = std::make_unique<btCompoundShape>();
+    for (const auto& points : hulls) {
+        auto hull = makeHull(points, whereFrom);
+        compound->addChildShape(btTransform::getIdentity(), hull.get());
+        shapes_.push_back(std::move(hull));
+    }
+    btRigidBody::btRigidBodyConstructionInfo info = staticInfo(compound.get());
+    auto body = std::make_unique<btRigidBody>(info);
+    // Kinematic: Bullet moves props resting on it with it and never moves it.
+    body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+    body->setActivationState(DISABLE_DEACTIVATION);
+    body->setUserIndex(userIndex);
+    world_->addRigidBody(body.get());
+    shapes_.push_back(std::move(compound));
+    kinematic_.push_back(std::move(body));
+    return static_cast<int>(kinematic_.size() - 1);
+}
+
+void PhysicsWorld::setKinematicOffset(int i, const Vec3& offset) {
+    btRigidBody& body = *kinematic_.at(static_cast<std::size_t>(i));
+    const btTransform t(btQuaternion::getIdentity(), toBt(offset));
+    // The world transform only: Bullet's next step takes the kinematic velocity (for props riding
+    // it) from the interpolation transform, the pose of the step before.
+    body.setWorldTransform(t);
+    world_->updateSingleAabb(&body);  // sweeps and contacts before the next Bullet step see it moved
 }
 
 void PhysicsWorld::addStaticTriangleMesh(const TriangleMesh& mesh) {

@@ -35,11 +35,18 @@ inline btVector3 toBt(const Vec3& v) {
 }
 inline Vec3 fromBt(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
+// Bodies of moving brushes (sim/movers.h) carry this user index minus the mover's index: below
+// every other kind (props >= 0, level -1, projectiles -2), so code that tells props apart by
+// `>= 0` treats a mover like level geometry.
+constexpr int kMoverUserIndexBase = -1000;
+inline int moverUserIndex(int mover) { return kMoverUserIndexBase - mover; }
+inline bool isMoverUserIndex(int userIndex) { return userIndex <= kMoverUserIndexBase; }
+
 struct RayHit {
     Vec3 point;
     Vec3 normal;            // unit, facing the ray's origin
     double fraction = 1;    // 0..1 along the ray
-    int dynamicBody = -1;   // index of the dynamic body hit, -1 for static geometry, -2 a projectile
+    int dynamicBody = -1;   // index of the dynamic body hit, -1 for static geometry, -2 a projectile, moverUserIndex
 };
 
 struct SweepHit {
@@ -67,7 +74,8 @@ public:
     PhysicsWorld(const PhysicsWorld&) = delete;
     PhysicsWorld& operator=(const PhysicsWorld&) = delete;
 
-    // A level's colliders: a convex hull per solid brush (non-solid ones are skipped) and a box per
+    // A level's colliders: a convex hull per solid brush (non-solid and mover brushes are skipped:
+    // movers add their own kinematic bodies, addKinematicHulls) and a box per
     // `prop_crate` entity (keys `size` in metres, default 0.75, and `mass` in kg, default 20; the
     // origin marks the crate's base). Throws SimError naming level.sourcePath:line:column.
     void addLevel(const map::Level& level);
@@ -75,6 +83,13 @@ public:
     void addStaticHull(const std::vector<Vec3>& points, const std::string& where = "hull");
     // World-space triangles (misc_model colliders). Throws SimError on an out-of-range index.
     void addStaticTriangleMesh(const TriangleMesh& mesh);
+    // A kinematic body (a mover): one convex hull per point set (world space at rest, each checked
+    // like a static hull), moved by setKinematicOffset. Its user index is `userIndex`. Returns its index.
+    int addKinematicHulls(const std::vector<std::vector<Vec3>>& hulls, int userIndex, const std::string& where);
+    // Places kinematic body `i` at its rest pose translated by `offset` (bodies never rotate).
+    void setKinematicOffset(int i, const Vec3& offset);
+    std::size_t kinematicBodyCount() const { return kinematic_.size(); }
+
     enum class BodyShape { Box, Cylinder };
     // Returns the index of the new dynamic body.
     int addDynamicBox(const Vec3& centre, const Vec3& halfExtents, double mass, double yaw);
@@ -111,6 +126,7 @@ public:
 
 private:
     void addStatic(std::unique_ptr<btCollisionShape> shape);
+    std::unique_ptr<btConvexHullShape> makeHull(const std::vector<Vec3>& points, const std::string& whereFrom) const;
 
     std::unique_ptr<btDefaultCollisionConfiguration> config_;
     std::unique_ptr<btCollisionDispatcher> dispatcher_;
@@ -125,6 +141,7 @@ private:
     std::vector<std::unique_ptr<btDefaultMotionState>> motionStates_;
     std::vector<std::unique_ptr<btRigidBody>> static_;
     std::vector<std::unique_ptr<btRigidBody>> dynamic_;
+    std::vector<std::unique_ptr<btRigidBody>> kinematic_;
     std::vector<Vec3> halfExtents_;
     std::vector<BodyShape> bodyShapes_;
     struct Projectile {

@@ -254,6 +254,21 @@ void PlayerController::pushBodies(const std::vector<Contact>& contacts, const Ve
     }
 }
 
+int PlayerController::standingOn(const PlayerState& s) const {
+    const Body b = body(s.crouching);
+    const Vec3 centre = s.feet + kUp * (b.height / 2);
+    const auto hit = world_.sweep(*b.shape, centre, centre - kUp * kGroundProbe);
+    return hit ? hit->dynamicBody : kNothing;
+}
+
+double PlayerController::penetration(const PlayerState& s, int userIndex) const {
+    const Body b = body(s.crouching);
+    double deepest = 0;
+    for (const auto& c : world_.contacts(*b.shape, s.feet + kUp * (b.height / 2), 0.0))
+        if ((userIndex == kAnyBody || c.dynamicBody == userIndex) && c.distance < 0) deepest = std::max(deepest, -c.distance);
+    return deepest;
+}
+
 void PlayerController::step(PlayerState& s, const PlayerCommand& rawCmd, double dt) {
     const PlayerTuning& t = tuning_;
     const PlayerCommand cmd = sanitized(rawCmd);

@@ -113,6 +113,14 @@ public:
     // liquid there.
     int waterLevel(const Vec3& feet, double height, const Vec3& eye, map::LiquidKind* kind) const;
 
+    // For movers (sim/movers.h). The user index of what the player stands on (the nearest body a
+    // ground probe below the capsule meets), or kNothing.
+    static constexpr int kNothing = -999, kAnyBody = -998;
+    int standingOn(const PlayerState& s) const;
+    // How deep (metres, 0 when clear) the capsule overlaps the body with user index `userIndex`,
+    // or anything (kAnyBody).
+    double penetration(const PlayerState& s, int userIndex) const;
+
 private:
     struct Body {
         const btCapsuleShape* shape;

@@ -22,6 +22,7 @@ enum class SimEventType {
     ReloadStart,
     ReloadEnd,
     DryFire,          // trigger pulled on an empty rifle with nothing to reload
+    Teleport,         // position = the player's new feet, id = the trigger_teleport's entity (views do not interpolate across it)
 };
 
 enum class Surface { Level, Target, Prop, Grenade };

@@ -30,6 +30,9 @@ Simulation::Simulation(const map::Level& level, const SimConfig& config, const s
     liquids_ = map::LiquidQuery(level);
     controller_->setLiquids(&liquids_);
     combat_ = std::make_unique<Combat>(level, *physics_, config.tickRate);
+    keys_ = std::make_unique<EntityKeys>(level, warnings_);
+    movers_ = std::make_unique<Movers>(level, *physics_, config.tickRate, *keys_);
+    triggers_ = std::make_unique<Triggers>(level, config.tickRate, *keys_);
     if (config.overrideStart) {
         startFeet_ = config.startFeet;
         startYaw_ = config.startYaw;
@@ -62,9 +65,17 @@ void Simulation::step(const PlayerCommand& cmd) {
     events_.clear();
     const PlayerState before = player_;
     controller_->step(player_, cmd, dt());
+    // As Quake orders a frame: the player moves and touches triggers, then the movers push.
+    triggers_->step(player_, controller_->tuning().radius, *physics_, *movers_, events_);
+    std::vector<int> fired;
+    movers_->step(player_, *controller_, fired);
     applyLiquidDamage();
     physics_->step(dt());
     combat_->step(cmd, player_, before, rng_, events_);
+    // Shootable movers hit this tick open (the motion starts next tick).
+    for (const SimEvent& e : events_)
+        if (e.type == SimEventType::Impact) movers_->shot(e.position, fired);
+    triggers_->fire(fired, *movers_);
     ++tick_;
 }
 
@@ -107,6 +118,8 @@ std::uint64_t Simulation::stateHash() const {
             h.add(static_cast<float>(v));
     }
     combat_->hash(h);
+    movers_->hash(h);
+    triggers_->hash(h);
     h.add(rng_.state());
     h.add(rng_.increment());
     return h.value();

@@ -8,9 +8,12 @@
 #include "map/level.h"
 #include "map/liquid.h"
 #include "sim/combat.h"
+#include "sim/entity_keys.h"
+#include "sim/movers.h"
 #include "sim/physics_world.h"
 #include "sim/player_controller.h"
 #include "sim/sim_events.h"
+#include "sim/triggers.h"
 
 #include <cstdint>
 #include <memory>
@@ -52,6 +55,11 @@ public:
     PhysicsWorld& physics() { return *physics_; }
     const PhysicsWorld& physics() const { return *physics_; }
     std::vector<BodyPose> bodyPoses() const;
+    // Moving brushes (doors, plats, buttons, trains) and triggers (sim/movers.h, sim/triggers.h).
+    const Movers& movers() const { return *movers_; }
+    const Triggers& triggers() const { return *triggers_; }
+    // What the level's movers and triggers could not use ("file:line: classname: problem").
+    const std::vector<std::string>& warnings() const { return warnings_; }
 
     // Combat (sim/combat.h) and what happened during the last step.
     const std::vector<SimEvent>& events() const { return events_; }
@@ -66,7 +74,7 @@ public:
     int liquidDamage() const { return liquidDamage_; }  // health taken by slime and lava so far
     int deaths() const { return deaths_; }              // times the player died and respawned
 
-    // Hash of everything that evolves: tick, player, every dynamic body, the RNG.
+    // Hash of everything that evolves: tick, player, every dynamic body, the movers and triggers, the RNG.
     std::uint64_t stateHash() const;
     std::string stateHashHex() const;
 
@@ -78,6 +86,10 @@ private:
     std::unique_ptr<PhysicsWorld> physics_;
     std::unique_ptr<PlayerController> controller_;
     std::unique_ptr<Combat> combat_;
+    std::vector<std::string> warnings_;
+    std::unique_ptr<EntityKeys> keys_;
+    std::unique_ptr<Movers> movers_;
+    std::unique_ptr<Triggers> triggers_;
     std::vector<SimEvent> events_;
     PlayerState player_;
     Rng rng_;

@@ -99,6 +99,22 @@ TEST(MapCompile, EntityClassesDecideVisibilityAndSolidity) {
     EXPECT_EQ(l.unknownClassnames[1], "weapon_nailgun");
 }
 
+TEST(MapCompile, MoverBrushesAreSolidButApartFromTheWorld) {
+    const std::string text = entity("\"classname\" \"worldspawn\"", cube(0, 0, 0)) +
+                             entity("\"classname\" \"func_door\"", cube(100, 0, 0)) +
+                             entity("\"classname\" \"func_plat\"", cube(200, 0, 0)) +
+                             entity("\"classname\" \"func_wall\"", cube(300, 0, 0));
+    const Level l = compile(text);
+    ASSERT_EQ(l.brushes.size(), 4u);
+    EXPECT_FALSE(l.brushes[0].mover);
+    EXPECT_TRUE(l.brushes[1].mover && l.brushes[1].solid && l.brushes[1].visible);
+    EXPECT_EQ(l.brushes[1].entityIndex, 1);
+    EXPECT_TRUE(l.brushes[2].mover);
+    EXPECT_FALSE(l.brushes[3].mover);  // func_wall stays static
+    EXPECT_TRUE(isMoverClass("func_train") && isMoverClass("func_button") && isMoverClass("func_door_secret"));
+    EXPECT_FALSE(isMoverClass("func_detail") || isMoverClass("trigger_once"));
+}
+
 TEST(MapCompile, PlayerStartLightsAndModels) {
     const std::string text = entity("\"classname\" \"worldspawn\"", cube(0, 0, -64)) +
                              entity("\"classname\" \"info_player_deathmatch\"\n\"origin\" \"500 0 24\"") +

@@ -6,6 +6,9 @@
 #include "sim/simulation.h"
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace obscura::sim::testlevels {
 
@@ -70,6 +73,36 @@ inline map::LevelEntity crate(const Vec3& origin) {
     e.hasOrigin = true;
     e.origin = origin;
     return e;
+}
+
+// An entity with keys; its brushes (boxes) tagged with its index and as a mover when it is one.
+inline int addEntity(map::Level& l, const std::string& classname, std::vector<std::pair<std::string, std::string>> keys,
+              std::vector<std::pair<Vec3, Vec3>> boxes = {}, int line = 0) {
+    map::LevelEntity e;
+    e.classname = classname;
+    e.keys = std::move(keys);
+    e.keys.insert(e.keys.begin(), {"classname", classname});
+    e.pos.line = line;
+    e.isBrushEntity = !boxes.empty();
+    const int index = static_cast<int>(l.entities.size());
+    for (const auto& [mn, mx] : boxes) {
+        map::LevelBrush b = box(mn, mx);
+        b.entityIndex = index;
+        b.mover = classname.rfind("func_", 0) == 0;
+        b.solid = classname.rfind("trigger_", 0) != 0;
+        l.brushes.push_back(b);
+    }
+    l.entities.push_back(e);
+    return index;
+}
+
+inline int addPoint(map::Level& l, const std::string& classname, const Vec3& origin, double yaw,
+             std::vector<std::pair<std::string, std::string>> keys) {
+    const int i = addEntity(l, classname, std::move(keys));
+    l.entities[static_cast<std::size_t>(i)].hasOrigin = true;
+    l.entities[static_cast<std::size_t>(i)].origin = origin;
+    l.entities[static_cast<std::size_t>(i)].yaw = yaw;
+    return i;
 }
 
 inline PlayerCommand walk(float forward = 1, float right = 0) {
