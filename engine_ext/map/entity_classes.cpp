@@ -30,14 +30,16 @@ std::vector<KeyGroup> makeGroups() {
          {key("angle", T::Float, "0", "Yaw in degrees, counter-clockwise from east (-1 up, -2 down count as 0)"),
           key("angles", T::String, "", "'pitch yaw roll' in degrees; only the yaw is used")}},
         {"MoveDirection",
-         "Moves along a direction (Quake's; compiled as static brushes today)",
+         "Moves along a direction (game/sim/movers.h)",
          {key("angle", T::Float, "0", "Direction to move, degrees (-1 up, -2 down)")}},
         // map_compile.cpp addLight: every Quake light class becomes one point light.
         {"Light",
          "A point light",
          {key("light", T::Integer, "300", "Brightness; also the radius of influence in map units"),
           key("_light", T::Integer, "300", "Brightness when 'light' is absent (some tools write this)"),
-          key("_color", T::Colour, "1 1 1", "Colour, 0..1 or 0..255"), key("color", T::Colour, "1 1 1", "Colour when '_color' is absent")}},
+          key("_color", T::Colour, "1 1 1", "Colour, 0..1 or 0..255"), key("color", T::Colour, "1 1 1", "Colour when '_color' is absent"),
+          key("_sun", T::Integer, "0", "1: this light is the level's sun, along its mangle (unless worldspawn sets _sunlight)"),
+          key("_nostaticlight", T::Integer, "0", "1: lights nothing (ericw-tools: dynamic only)")}},
         // game/sim/combat.cpp Combat::Combat.
         {"Board",
          "A shooting-range board standing on its origin, facing its yaw",
@@ -45,7 +47,7 @@ std::vector<KeyGroup> makeGroups() {
           key("height", T::Float, "1.6", "Board height, metres (0.05 to 10)"),
           key("reset", T::Float, "3", "Seconds down after a hit before it rises (up to 600)")}},
         {"Trigger",
-         "Fires its target (Quake's; kept as an invisible, non-solid volume today)",
+         "Fires its target when the player enters it (an invisible, non-solid volume; game/sim/triggers.h)",
          {key("delay", T::Float, "0", "Seconds before firing"), key("message", T::String, "", "Text shown when fired"),
           key("health", T::Integer, "0", "If set, must be shot instead of touched"),
           key("spawnflags", T::Flags, "0", "", {{"1", "Not touchable"}})}},
@@ -66,6 +68,8 @@ std::vector<EntityClass> makeClasses() {
                   key("_sunlight_color", T::Colour, "1 1 1", "Sun colour, 0..255 or 0..1"),
                   key("_sunlight2", T::Float, "0", "Sky-dome fill light brightness (0 is none)"),
                   key("_sunlight2_color", T::Colour, "1 1 1", "Sky-dome colour, 0..255 or 0..1"),
+                  key("_ambient_sky", T::Colour, "", "Obscura: the ambient from above, linear RGB 0..1 (replaces _minlight's)"),
+                  key("_ambient_ground", T::Colour, "", "Obscura: the ambient from below, linear RGB 0..1"),
                   key("_wateralpha", T::Float, "1", "Opacity of water (0..1; also 'wateralpha'): below 1 translucent"),
                   key("_slimealpha", T::Float, "1", "Opacity of slime (0..1; also 'slimealpha'; unset: the water's)"),
                   key("_lavaalpha", T::Float, "1", "Opacity of lava (0..1; also 'lavaalpha'; unset: the water's)"),
@@ -166,7 +170,7 @@ std::vector<EntityClass> makeClasses() {
     c.push_back({"func_detail_illusionary", EntityKind::Brush, R::Geometry, BrushRole::NonSolid, "Detail brushes, rendered but not solid",
                  {}, {}, "", ""});
     // Quake movers: static solid brushes until the movers land (the keys are Quake's).
-    c.push_back({"func_door", EntityKind::Brush, R::Mover, BrushRole::Solid, "A door (compiled as a static solid brush today)",
+    c.push_back({"func_door", EntityKind::Brush, R::Mover, BrushRole::Solid, "A door",
                  {"Targetname", "Target", "MoveDirection"},
                  {key("speed", T::Float, "100", "Units a second"), key("wait", T::Float, "3", "Seconds open before closing (-1 stays open)"),
                   key("lip", T::Float, "8", "Units left showing when open"), key("dmg", T::Integer, "2", "Damage when blocked"),
@@ -176,35 +180,42 @@ std::vector<EntityClass> makeClasses() {
                       {{"1", "Starts open"}, {"4", "Don't link"}, {"8", "Gold key"}, {"16", "Silver key"}, {"32", "Toggle"}})},
                  "", ""});
     c.push_back({"func_door_secret", EntityKind::Brush, R::Mover, BrushRole::Solid,
-                 "A secret door that slides back then sideways (compiled as a static solid brush today)", {"Targetname", "MoveDirection"},
+                 "A secret door that slides back then sideways", {"Targetname", "MoveDirection"},
                  {key("wait", T::Float, "5", "Seconds open before closing"), key("t_width", T::Float, "", "Sideways distance (default: its width)"),
                   key("t_length", T::Float, "", "Back distance (default: its depth)"), key("dmg", T::Integer, "2", "Damage when blocked"),
                   key("message", T::String, "", "Text when touched"), sounds("3", {{"1", "Medieval"}, {"2", "Metal"}, {"3", "Base"}}),
                   key("spawnflags", T::Flags, "0", "",
                       {{"1", "Open once"}, {"2", "First left"}, {"4", "First down"}, {"8", "No shoot"}, {"16", "Always shoot"}})},
                  "", ""});
-    c.push_back({"func_plat", EntityKind::Brush, R::Mover, BrushRole::Solid, "A lift (compiled as a static solid brush today)",
+    c.push_back({"func_plat", EntityKind::Brush, R::Mover, BrushRole::Solid, "A lift",
                  {"Targetname"},
                  {key("speed", T::Float, "150", "Units a second"), key("height", T::Float, "", "Travel (default: its height minus 8)"),
                   sounds("1", {{"1", "Base fast"}, {"2", "Chain slow"}}), key("spawnflags", T::Flags, "0", "", {{"1", "Low trigger"}})},
                  "", ""});
     c.push_back({"func_button", EntityKind::Brush, R::Mover, BrushRole::Solid,
-                 "A button that fires its target (compiled as a static solid brush today)", {"Targetname", "Target", "MoveDirection"},
+                 "A button that fires its target", {"Targetname", "Target", "MoveDirection"},
                  {key("speed", T::Float, "40", "Units a second"), key("wait", T::Float, "1", "Seconds before it returns (-1 stays in)"),
                   key("lip", T::Float, "4", "Units left showing when pressed"), key("health", T::Integer, "0", "If set, must be shot"),
                   key("delay", T::Float, "0", "Seconds before firing"), key("message", T::String, "", "Text when pressed"),
                   sounds("0", {{"0", "Steam metal"}, {"1", "Wooden clunk"}, {"2", "Metallic click"}, {"3", "In-out"}})},
                  "", ""});
     c.push_back({"func_train", EntityKind::Brush, R::Mover, BrushRole::Solid,
-                 "A platform moving along path_corners (compiled as a static solid brush today)", {"Targetname"},
+                 "A platform moving along path_corners", {"Targetname"},
                  {key("target", T::TargetDestination, "", "First path_corner"), key("speed", T::Float, "100", "Units a second"),
                   key("dmg", T::Integer, "2", "Damage when blocked"), sounds("0", {{"0", "None"}, {"1", "Ratchet metal"}})},
                  "", ""});
-    // Triggers: invisible, non-solid volumes (what fires them is not implemented yet).
+    // Triggers: invisible, non-solid volumes the player fires (game/sim/triggers.h).
     c.push_back({"trigger_multiple", EntityKind::Brush, R::Trigger, BrushRole::Volume, "Fires its target each time it is entered",
                  {"Targetname", "Target", "Trigger"}, {key("wait", T::Float, "0.2", "Seconds before it can fire again")}, "", ""});
     c.push_back({"trigger_once", EntityKind::Brush, R::Trigger, BrushRole::Volume, "Fires its target once",
                  {"Targetname", "Target", "Trigger"}, {}, "", ""});
+    c.push_back({"trigger_secret", EntityKind::Brush, R::Trigger, BrushRole::Volume, "Fires its target once and counts a secret",
+                 {"Targetname", "Target", "Trigger"}, {}, "", ""});
+    c.push_back({"trigger_relay", EntityKind::Point, R::Trigger, BrushRole::Solid, "Fires its targets when it is fired (after its delay)",
+                 {"Targetname", "Target"}, {key("delay", T::Float, "0", "Seconds before firing")},
+                 "128 128 128", "-8 -8 -8, 8 8 8"});
+    c.push_back({"trigger_counter", EntityKind::Point, R::Trigger, BrushRole::Solid, "Fires its target after it has been fired 'count' times",
+                 {"Targetname", "Target"}, {key("count", T::Integer, "2", "Firings needed")}, "128 128 128", "-8 -8 -8, 8 8 8"});
     c.push_back({"trigger_teleport", EntityKind::Brush, R::Trigger, BrushRole::Volume,
                  "Sends the player to the info_teleport_destination named by its target", {"Targetname"},
                  {key("target", T::TargetDestination, "", "The info_teleport_destination"),

@@ -4,7 +4,7 @@
 // writeFgd; tests/map/fgd_test.cpp holds the committed file to it both ways). Plain C++, no OGRE.
 //
 // Every key listed is one the game reads (grep `value("` in engine_ext/ and game/) or, for the
-// Quake movers and triggers compiled as static brushes today, the standard Quake key a mapper sets
+// Quake movers and triggers (game/sim/movers.h, triggers.h), the standard Quake key a mapper sets
 // for them. `classname` and `origin` belong to every entity and are not listed (TrenchBroom writes
 // them itself); see kImplicitKeys.
 #pragma once
@@ -22,7 +22,7 @@ enum class EntityKind { Point, Brush };
 enum class EntityRole {
     World,        // worldspawn: the level's static brushes and level-wide settings
     Geometry,     // brush groups compiled with the world (func_wall, func_detail*, func_group...)
-    Mover,        // Quake movers (doors, plats, buttons, trains): compiled as static brushes today
+    Mover,        // Quake movers (doors, plats, buttons, trains): moved by the game (game/sim/movers.h)
     Trigger,      // trigger volumes: kept as invisible, non-solid brushes
     PlayerStart,  // where the player spawns
     Light,        // a point light

@@ -1,6 +1,7 @@
 // See map_lights.h.
 #include "map/map_lights.h"
 
+#include "map/entity_classes.h"
 #include "map/input_file.h"
 #include "map/map_compile.h"
 #include "map/quake_light.h"
@@ -156,7 +157,8 @@ void compileLights(Level& level, const std::string& path, std::vector<std::strin
 
     bool sunFromEntity = false;
     for (const LevelEntity& e : level.entities) {
-        if (e.classname.rfind("light", 0) != 0 || !e.hasOrigin) continue;
+        const EntityClass* known = findEntityClass(e.classname);  // the table's light classes only
+        if (!known || known->role != EntityRole::Light || !e.hasOrigin) continue;
         const Keys k(e, path, warnings);
         const char* valueKey = e.has("light") ? "light" : "_light";
         if (e.has(valueKey)) {

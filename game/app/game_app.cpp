@@ -165,8 +165,7 @@ void GameApp::load() {
     // map's: the level still plays.
     const std::vector<std::string>& simWarnings = session_->sim().warnings();
     for (const auto& w : simWarnings) Ogre::LogManager::getSingleton().logWarning(w);
-    for (const auto& line : map::warningLines(simWarnings)) std::cerr << line << "
-";
+    for (const auto& line : map::warningLines(simWarnings)) std::cerr << line << "\n";
 
     view_ = std::make_unique<RenderView>(RenderView::Context{*mRoot, *getRenderWindow(), *mOverlaySystem, *mShaderGenerator},
                                          settings_, *session_);

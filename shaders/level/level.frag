@@ -57,9 +57,9 @@ void main()
 {
     vec3 n = normalize(vNormal);
     // 0.7 linear = 0.85 gamma-encoded: the light grey of untextured surfaces.
-    vec4 texel = hasAlbedo < 0.5 ? vec4(vec3(pow(0.7, 1.0 / 2.2)), 1.0) : texture(albedoMap, vUv);
-    if (texel.a < alphaCutoff) discard;  // a hole: no G-buffer write, so AO and the view see through
-    vec3 albedo = texel.rgb;
+    vec4 surface = hasAlbedo < 0.5 ? vec4(vec3(pow(0.7, 1.0 / 2.2)), 1.0) : texture(albedoMap, vUv);
+    if (surface.a < alphaCutoff) discard;  // a hole: no G-buffer write, so AO and the view see through
+    vec3 albedo = surface.rgb;
 
     vec3 light = vec3(0.0);
     float ndotl = dot(n, sunDirection);
