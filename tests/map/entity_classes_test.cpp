@@ -14,9 +14,7 @@ namespace {
 using testdata::cube;
 using testdata::entity;
 
-Level compile(const std::string& text, std::vector<std::string>* warnings = nullptr) {
-    return compileLevel(parseMap(text, "t.map"), {}, warnings);
-}
+using testdata::compile;
 
 TEST(EntityClasses, NamesAreUniqueAndEveryBaseExists) {
     std::set<std::string> names;

@@ -24,9 +24,7 @@ using testdata::entity;
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-Level compile(const std::string& text, std::vector<std::string>* warnings = nullptr) {
-    return compileLevel(parseMap(text, "t.map"), {}, warnings);
-}
+using testdata::compile;
 
 const std::string kWorld = entity("\"classname\" \"worldspawn\"", cube(-512, -512, -64, "floor", 1024)) +
                            entity("\"classname\" \"info_player_start\"\n\"origin\" \"0 0 24\"");  // lines 1-15

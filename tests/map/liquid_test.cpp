@@ -12,9 +12,7 @@ using testdata::cube;
 using testdata::entity;
 
 namespace {
-Level compile(const std::string& text, std::vector<std::string>* warnings = nullptr) {
-    return compileLevel(parseMap(text, "t.map"), {}, warnings);
-}
+using testdata::compile;
 const std::string kWorld = "\"classname\" \"worldspawn\"\n\"mapversion\" \"220\"";
 
 std::size_t visibleFaces(const LevelBrush& b) {

@@ -16,9 +16,7 @@ using testdata::entity;
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-Level compile(const std::string& text, std::vector<std::string>* warnings = nullptr) {
-    return compileLevel(parseMap(text, "t.map"), {}, warnings);
-}
+using testdata::compile;
 
 // Every polygon planar, convex, counter-clockwise around its normal.
 void expectWellFormed(const LevelPolygon& p) {

@@ -1,7 +1,11 @@
 // Small .map texts shared by the map tests.
 #pragma once
 
+#include "map/map_compile.h"
+#include "map/map_parser.h"
+
 #include <string>
+#include <vector>
 
 namespace obscura::map::testdata {
 
@@ -24,6 +28,11 @@ inline std::string cube(int x0, int y0, int z0, const std::string& tex = "tex", 
 
 inline std::string entity(const std::string& keys, const std::string& brushes = "") {
     return "{\n" + keys + "\n" + brushes + "}\n";
+}
+
+// A .map text compiled as the game compiles a level file ("t.map" in messages).
+inline Level compile(const std::string& text, std::vector<std::string>* warnings = nullptr) {
+    return compileLevel(parseMap(text, "t.map"), {}, warnings);
 }
 
 }  // namespace obscura::map::testdata
