@@ -100,16 +100,23 @@ Movers::Movers(const map::Level& level, PhysicsWorld& physics, double tickRate, 
     for (const Mover& m : movers_) physics_.setKinematicOffset(m.body, m.s.offset);
 }
 
-// func_door: pos2 = movedir * (|movedir . size| - lip); START_OPEN swaps the two ends.
-void Movers::buildDoor(Mover& m, const map::LevelEntity& e) {
+// Doors and buttons (QuakeC's door and button spawn functions): `speed` (units a second), `wait`
+// (seconds; 0 takes the class's) and a far end pos2 = movedir * (|movedir . size| - lip), each
+// key's 0 or absence taking the class's default.
+void Movers::slideAlongAngle(Mover& m, const map::LevelEntity& e, double speed, double wait, double lip) {
     const double upm = keys_.unitsPerMetre();
-    m.kind = MoverKind::Door;
-    m.speed = keys_.positive(e, "speed", kDoorSpeed) / upm / tickRate_;
-    const double wait = keys_.number(e, "wait", 0);
-    m.wait = std::lround((wait == 0 ? kDoorWait : wait) * tickRate_);
-    const double lip = keys_.number(e, "lip", 0);
+    m.speed = keys_.positive(e, "speed", speed) / upm / tickRate_;
+    const double w = keys_.number(e, "wait", 0);
+    m.wait = std::lround((w == 0 ? wait : w) * tickRate_);
+    const double l = keys_.number(e, "lip", 0);
     const Vec3 dir = keys_.moveDirection(e);
-    m.pos2 = dir * (extentAlong(dir, m.bounds) - (lip == 0 ? kDoorLip : lip) / upm);
+    m.pos2 = dir * (extentAlong(dir, m.bounds) - (l == 0 ? lip : l) / upm);
+}
+
+// func_door: START_OPEN swaps the two ends.
+void Movers::buildDoor(Mover& m, const map::LevelEntity& e) {
+    m.kind = MoverKind::Door;
+    slideAlongAngle(m, e, kDoorSpeed, kDoorWait, kDoorLip);
     const int flags = keys_.spawnflags(e);
     m.toggle = (flags & kDoorToggle) != 0;
     if (flags & (kDoorGoldKey | kDoorSilverKey)) keys_.warn(e, "key doors need no key here: it opens like a plain door");
@@ -123,14 +130,8 @@ void Movers::buildDoor(Mover& m, const map::LevelEntity& e) {
 
 // func_button: like a door with lip 4, speed 40, wait 1; fires its targets once pressed in.
 void Movers::buildButton(Mover& m, const map::LevelEntity& e) {
-    const double upm = keys_.unitsPerMetre();
     m.kind = MoverKind::Button;
-    m.speed = keys_.positive(e, "speed", kButtonSpeed) / upm / tickRate_;
-    const double wait = keys_.number(e, "wait", 0);
-    m.wait = std::lround((wait == 0 ? kButtonWait : wait) * tickRate_);
-    const double lip = keys_.number(e, "lip", 0);
-    const Vec3 dir = keys_.moveDirection(e);
-    m.pos2 = dir * (extentAlong(dir, m.bounds) - (lip == 0 ? kButtonLip : lip) / upm);
+    slideAlongAngle(m, e, kButtonSpeed, kButtonWait, kButtonLip);
     m.shootable = keys_.number(e, "health", 0) > 0;
     m.s.phase = Bottom;
 }

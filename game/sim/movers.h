@@ -87,6 +87,7 @@ private:
         State s;
     };
 
+    void slideAlongAngle(Mover& m, const map::LevelEntity& e, double speed, double wait, double lip);
     void buildDoor(Mover& m, const map::LevelEntity& e);
     void buildButton(Mover& m, const map::LevelEntity& e);
     void buildPlat(Mover& m, const map::LevelEntity& e);
