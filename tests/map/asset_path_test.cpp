@@ -10,8 +10,15 @@ using namespace obscura::map;
 namespace fs = std::filesystem;
 
 namespace {
+// One tree per test: ctest runs this file's tests as separate processes in parallel, and a shared
+// folder let one test's remove_all meet another's files (CI: "cannot remove: Directory not empty").
+fs::path treeFolder() {
+    return fs::path(testing::TempDir()) /
+           ("asset_tree_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+}
+
 struct Tree {
-    fs::path base = fs::path(testing::TempDir()) / "asset_tree";
+    fs::path base = treeFolder();
     fs::path level = base / "levels", media = base / "media", outside = base / "private";
     Tree() {
         fs::remove_all(base);
@@ -22,6 +29,12 @@ struct Tree {
         fs::create_symlink(outside / "secret.mesh", level / "link.mesh");
         fs::create_symlink(media / "tree.mesh", level / "ok_link.mesh");
     }
+    ~Tree() {
+        std::error_code ignored;
+        fs::remove_all(base, ignored);
+    }
+    Tree(const Tree&) = delete;
+    Tree& operator=(const Tree&) = delete;
     std::vector<std::string> dirs() const { return {level.string()}; }
     std::vector<std::string> roots() const { return {level.string(), media.string()}; }
 };
