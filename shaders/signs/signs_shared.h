@@ -1,0 +1,14 @@
+// Limits the signs' C++ (engine_ext/signs) and GLSL (shaders/signs) share: plain #defines valid in both.
+#ifndef OBSCURA_SIGNS_SHARED_H
+#define OBSCURA_SIGNS_SHARED_H
+
+// Back-lit signs lit in one frame: the nearest to the camera. Each costs every marched sample one
+// segment/plane intersection and one mask read, and every lit pixel the same; 2 keeps the
+// volumetric pass's cost within the 1.3x of smoke alone on llvmpipe.
+#define SIGN_MAX_LIGHTS 2
+
+// Bullet holes a sign's mask keeps (the oldest closes when a new one is shot): each is one disc
+// tested analytically per mask read (shaders/signs/sign_light.glsl), so the count bounds that cost.
+#define SIGN_MAX_HOLES 16
+
+#endif
