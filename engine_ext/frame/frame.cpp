@@ -61,11 +61,13 @@ bool Uniforms::check(const char* name) {
     return false;
 }
 
-// One compositor of the chain: the frame's own (technique == nullptr) or a technique's.
+// One compositor of the chain: the frame's own (no techniques) or a technique's. Techniques that
+// name the same compositor share it (the volumetric pass: smoke and sign shafts are marched
+// together, one transmittance), each binding its own uniforms and textures into its passes.
 struct Frame::Entry {
     Stage stage;
     std::string compositor;
-    Technique* technique = nullptr;
+    std::vector<Technique*> techniques;
     Ogre::CompositorInstance* instance = nullptr;
     std::unique_ptr<Binder> binder;
     std::vector<std::string> missing;  // "material: uniform" its programs lack (found at setup)
@@ -160,11 +162,18 @@ void Frame::turnOff(const Technique& t, const std::string& reason) {
 // The chain in stage order: the frame's own compositors and every technique that runs now.
 std::vector<std::unique_ptr<Frame::Entry>> Frame::plan() const {
     std::vector<std::unique_ptr<Entry>> p;
-    for (const Builtin& b : kBuiltins)
-        p.push_back(std::make_unique<Entry>(Entry{b.stage, split_ && b.stage == Stage::GBuffer ? kSplitGBuffer : b.compositor}));
+    auto entry = [&p](Stage stage, std::string compositor, std::vector<Technique*> techniques) {
+        p.push_back(std::make_unique<Entry>());
+        p.back()->stage = stage;
+        p.back()->compositor = std::move(compositor);
+        p.back()->techniques = std::move(techniques);
+    };
+    for (const Builtin& b : kBuiltins) entry(b.stage, split_ && b.stage == Stage::GBuffer ? kSplitGBuffer : b.compositor, {});
     for (Technique* t : techniques_) {
         if (t->compositor().empty() || !offReason(*t).empty()) continue;
-        p.push_back(std::make_unique<Entry>(Entry{t->stage(), t->compositor(), t}));
+        auto shared = std::find_if(p.begin(), p.end(), [&](const auto& e) { return e->compositor == t->compositor(); });
+        if (shared != p.end() && !(*shared)->techniques.empty()) (*shared)->techniques.push_back(t);
+        else entry(t->stage(), t->compositor(), {t});
     }
     // Stable: the frame's own pass of a stage comes before techniques of that stage, techniques in
     // the order they were added.
@@ -208,26 +217,29 @@ bool Frame::instance(Entry& e) {
     auto& cm = Ogre::CompositorManager::getSingleton();
     Ogre::CompositorPtr comp = cm.getByName(e.compositor, Ogre::RGN_DEFAULT);
     if (!comp) {
-        if (!e.technique) throw std::runtime_error("frame: compositor " + e.compositor + " (media/frame/frame.compositor) is missing");
-        turnOff(*e.technique, "its compositor " + e.compositor + " is not defined");
+        if (e.techniques.empty()) throw std::runtime_error("frame: compositor " + e.compositor + " (media/frame/frame.compositor) is missing");
+        for (Technique* t : e.techniques) turnOff(*t, "its compositor " + e.compositor + " is not defined");
         return false;
     }
-    if (e.technique) {
-        const std::string missing = e.technique->missingFeature(gpu_);
-        if (!missing.empty()) {
-            turnOff(*e.technique, "it needs " + missing);
-            return false;
-        }
+    bool ready = true;
+    for (Technique* t : e.techniques) {
+        const std::string missing = t->missingFeature(gpu_);
+        if (!missing.empty()) turnOff(*t, "it needs " + missing);
+        ready = ready && missing.empty();
+    }
+    if (!ready) return false;
+    if (!e.techniques.empty()) {
         comp->load();
-        for (size_t i = 0; i < comp->getNumTechniques(); ++i) e.technique->configure(*comp->getTechnique(i));
+        for (size_t i = 0; i < comp->getNumTechniques(); ++i)
+            for (Technique* t : e.techniques) t->configure(*comp->getTechnique(i));
     }
     e.instance = cm.addCompositor(&viewport_, e.compositor);
     if (!e.instance || !e.instance->getTechnique()) {
         const std::string why = "compositor " + e.compositor + " cannot run here (see the OGRE log)";
         if (e.instance) cm.removeCompositor(&viewport_, e.compositor);
         e.instance = nullptr;
-        if (!e.technique) throw std::runtime_error("frame: " + why);
-        turnOff(*e.technique, why);
+        if (e.techniques.empty()) throw std::runtime_error("frame: " + why);
+        for (Technique* t : e.techniques) turnOff(*t, why);
         return false;
     }
     e.binder = std::make_unique<Binder>(*this, e);
@@ -244,7 +256,7 @@ void Frame::publish() {
     published_["decalAlbedo"] = noDecals_;
     published_["decalNormal"] = noDecals_;  // coverage 0: the G-buffer's normal as it is
     for (auto& e : chain_) {
-        if (e->stage == Stage::GBuffer && !e->technique) {
+        if (e->stage == Stage::GBuffer && e->techniques.empty()) {
             // One 4-target texture, or the split's two 2-target ones (frame.compositor).
             auto target = [&](int slot) {
                 if (!split_) return e->instance->getTextureInstance("gbuffer", slot);
@@ -255,11 +267,12 @@ void Frame::publish() {
             published_["gbufferDepth"] = target(FRAME_GBUFFER_DEPTH);
             published_["gbufferLight"] = target(FRAME_GBUFFER_LIGHT);
             context_.flipY = e->instance->getRenderTarget(split_ ? "gbufferA" : "gbuffer")->requiresTextureFlipping();
-        } else if (e->stage == Stage::Lighting && !e->technique) {
+        } else if (e->stage == Stage::Lighting && e->techniques.empty()) {
             published_["litMap"] = e->instance->getTextureInstance("lit", 0);
-        } else if (e->technique) {
-            for (const Technique::Output& out : e->technique->outputs())
-                published_[out.unit] = e->instance->getTextureInstance(out.texture, out.mrt);
+        } else {
+            for (const Technique* t : e->techniques)
+                for (const Technique::Output& out : t->outputs())
+                    published_[out.unit] = e->instance->getTextureInstance(out.texture, out.mrt);
         }
     }
 }
@@ -296,8 +309,8 @@ void Frame::rebuild() {
             if (e->missing.empty()) continue;
             std::string list;
             for (const auto& m : e->missing) list += (list.empty() ? "" : ", ") + m;
-            if (!e->technique) throw std::runtime_error("frame: " + e->compositor + ": the program lacks uniforms " + list);
-            turnOff(*e->technique, "its program does not declare the uniform(s) the C++ sets: " + list);
+            if (e->techniques.empty()) throw std::runtime_error("frame: " + e->compositor + ": the program lacks uniforms " + list);
+            for (Technique* t : e->techniques) turnOff(*t, "its program does not declare the uniform(s) the C++ sets: " + list);
             checked = false;
         }
         if (!checked) continue;
@@ -312,7 +325,7 @@ void Frame::setupPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat) {
         Ogre::TextureUnitState* unit = pass->getTextureUnitState(i);
         if (auto it = published_.find(unit->getName()); it != published_.end()) unit->setTexture(it->second);
     }
-    if (e.technique) e.technique->setup(passId, *pass);
+    for (Technique* t : e.techniques) t->setup(passId, *pass);
     if (!pass->hasFragmentProgram()) return;
     mat.load();
     std::vector<std::string> missing;
@@ -333,7 +346,15 @@ void Frame::renderPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat) {
 }
 
 void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
-    if (e.technique) return e.technique->bind(passId, pass, u, context_);
+    if (passId == kVolumesPass) {
+        // The shared volumetric pass: the camera, for whichever techniques march in it.
+        const Ogre::Matrix4& proj = camera_.getProjectionMatrix();
+        u.set("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
+        u.set("flipY", context_.flipY ? 1.0f : 0.0f);
+        u.set("inverseView", camera_.getViewMatrix().inverse());
+    }
+    for (Technique* t : e.techniques) t->bind(passId, pass, u, context_);
+    if (!e.techniques.empty()) return;
     if (passId == kLightingPass) {
         u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
         u.set("exposure", settings_.exposure);  // undoes the tone map for the sky

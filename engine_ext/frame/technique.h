@@ -20,6 +20,13 @@ namespace obscura::frame {
 enum class Stage { GBuffer, Decals, AO, Lighting, Volumetrics, Output };
 const char* stageName(Stage s);
 
+// The volumetric pass (media/frame/frame.compositor, Obscura/Frame/Volumes): every technique of
+// the volumetrics stage returns this compositor and binds into this one pass, so all participating
+// media are marched together with one transmittance (shaders/frame/volumes.frag). The frame sets
+// the camera's uniforms there (projScale, flipY, inverseView).
+constexpr const char* kVolumesCompositor = "Obscura/Frame/Volumes";
+constexpr Ogre::uint32 kVolumesPass = 30;
+
 // What every pass may know of the frame being drawn.
 struct FrameContext {
     const Ogre::Camera* camera = nullptr;

@@ -17,7 +17,6 @@
 namespace obscura::smoke {
 
 namespace {
-constexpr Ogre::uint32 kMarchPass = 30;  // media/smoke/smoke.compositor
 // Density below which a cell does not count towards the marched box (what the RG8 texture
 // rounded to 0, so the box is as big as it was): 1 m of it passes 98.4 %
 // at the solver's shadowSigma (4 /m), nothing to see.
@@ -136,18 +135,14 @@ void SmokeRender::update(const SmokeManager& manager, bool stepped, float time) 
     chooseLights();
 }
 
-std::string SmokeRender::compositor() const { return bindings_.empty() ? std::string() : "Obscura/Smoke/Volumes"; }
+std::string SmokeRender::compositor() const { return bindings_.empty() ? std::string() : frame::kVolumesCompositor; }
 
 std::string SmokeRender::missingFeature(const frame::Gpu& gpu) const {
     return gpu.renderTargetFormat(Ogre::PF_FLOAT32_RGBA) ? std::string() : "render targets in PF_FLOAT32_RGBA";
 }
 
-void SmokeRender::bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u, const frame::FrameContext& ctx) {
-    if (passId != kMarchPass) return;
-    const Ogre::Matrix4& proj = ctx.camera->getProjectionMatrix();
-    u.set("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
-    u.set("flipY", ctx.flipY ? 1.0f : 0.0f);
-    u.set("inverseView", ctx.camera->getViewMatrix().inverse());
+void SmokeRender::bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u, const frame::FrameContext&) {
+    if (passId != frame::kVolumesPass) return;
     u.set("smokeCount", static_cast<float>(bindings_.size()));
     u.set("smokeSigma", sigma_);
     u.set("smokeTime", time_);

@@ -1,8 +1,8 @@
 // OGRE glue of the smoke grenades, the frame's volumetrics stage (engine_ext/frame/technique.h):
 // each live volume's fields (density, transmittance towards the sun, sky visibility;
 // SmokeVolume::exportRGBFloat) uploaded to its own PF_FLOAT32_RGB 3D texture after the simulation
-// steps, and ray-marched at half resolution against the G-buffer's depth
-// (media/smoke/smoke.compositor, shaders/smoke/), lit by the sun, the sky and the level's point
+// steps, and ray-marched at half resolution against the G-buffer's depth in the frame's shared
+// volumetric pass (frame::kVolumesCompositor, shaders/frame/volumes.frag, shaders/smoke/), lit by the sun, the sky and the level's point
 // lights near the smoke. The frame lays the result (volumeMap) over the light before the tone map.
 // Textures follow the volumes' ids: made when one appears, dropped when it finishes.
 #pragma once

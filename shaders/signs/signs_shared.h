@@ -10,5 +10,8 @@
 // Bullet holes a sign's mask keeps (the oldest closes when a new one is shot): each is one disc
 // tested analytically per mask read (shaders/signs/sign_light.glsl), so the count bounds that cost.
 #define SIGN_MAX_HOLES 16
+// SIGN_MAX_LIGHTS x SIGN_MAX_HOLES, written out: OGRE's GLSL uniform parser reads an array's size as
+// one number or macro, not an expression (sign_render.cpp checks the product).
+#define SIGN_HOLE_SLOTS 32
 
 #endif

@@ -1,7 +1,7 @@
-// Ray-marching the smoke grenades' volumes (engine_ext/smoke) in the frame's volumetrics stage,
-// against the G-buffer's linear depth: each view ray is marched from the volume's entry (or the
-// camera, when inside it) to its exit or the first opaque surface, whichever is nearer, so walls and
-// props hide the smoke behind them. Per step: the density from the 3D texture (R, HDR float) with
+// The smoke grenades' volumes (engine_ext/smoke) in the frame's volumetric pass
+// (shaders/frame/volumes.frag), which marches each view ray through the volumes' occupied boxes
+// (smokeSegments), up to the first opaque surface, so walls and props hide the smoke behind them.
+// Per sample (smokeAt): the density from the 3D texture (R, HDR float) with
 // sub-grid value noise so the 25 cm grid never shows, Beer-Lambert extinction at the solver's own
 // shadowSigma (the march and the self-shadowing agree), and the light scattered towards the eye:
 //   sun    sunColour x the solver's transmittance towards the sun (G) through a Henyey-Greenstein
@@ -15,9 +15,10 @@
 //          not shadowed by the smoke (that would be a second march per light).
 // Phases are scaled by pi: light arriving as the surfaces' irradiance E makes a white Lambertian
 // surface send E back; the same light makes smoke send (albedo x pi x phase x E) per unit of
-// opacity: isotropic scattering 0.25 E. The start is jittered per pixel against banding.
-// Needs: inverseView, projScale, flipY, vUv; ObscuraLighting's sun and ambient.
+// opacity: isotropic scattering 0.25 E.
+// Needs: ObscuraLighting's sun and ambient; VOLUME_MAX_SEGMENTS (volumes.frag).
 #include "smoke_shared.h"
+#include "volume_phase.glsl"
 uniform float smokeCount;          // volumes bound (0..SMOKE_MAX_VOLUMES)
 uniform vec3 smokeMin[SMOKE_MAX_VOLUMES];      // world AABB of each volume's grid (its texture)
 uniform vec3 smokeSize[SMOKE_MAX_VOLUMES];
@@ -40,8 +41,6 @@ const vec3 kSmokeAlbedo = vec3(0.9, 0.9, 0.88);  // single-scattering albedo: li
 const float kSmokeG = 0.3;         // Henyey-Greenstein asymmetry: smoke scatters somewhat forwards
 const float kSmokeIndirect = 0.3;  // the ambient's share that reaches smoke under a roof (bounced in;
                                    // the surfaces' ambient there is not darkened by the roof either)
-const float kSmokeStep = 0.25;     // metres: the grid's cell size; finer shows no more detail
-const int kSmokeMaxSteps = 64;     // a 16 m crossing
 // A rotation (orthonormal) for the noise lattice: value noise is blocky along its lattice axes;
 // turned off the world axes it cannot line up with the grid's cells or with a view down a
 // corridor. (The blocky look smoke had in roofed corridors was the sun's light, which reached
@@ -74,61 +73,70 @@ float smokeNoise(vec3 p)
                    mix(smokeHash(i + vec3(0, 1, 1)), smokeHash(i + vec3(1, 1, 1)), f.x), f.y), f.z);
 }
 
-// Henyey-Greenstein phase x pi (see above): 0.25 for g = 0.
-float smokePhase(float cosTheta, float g)
-{
-    float d = 1.0 + g * g - 2.0 * g * cosTheta;
-    return 0.25 * (1.0 - g * g) / (d * sqrt(d));
-}
 
-// Marches every volume along origin + t * dir for t < maxT; light (HDR) and transmittance
-// accumulate front to back within a volume (volumes are taken in binding order).
-void marchSmoke(vec3 origin, vec3 dir, float maxT, float jitter, inout vec3 light, inout float transmittance)
+// The smoke's parts of a view ray origin + t * dir, t < maxT: each volume's occupied box as an
+// interval, added to the volumetric pass's list (shaders/frame/volumes.frag marches them merged).
+void smokeSegments(vec3 origin, vec3 dir, float maxT, inout int n, inout float segT0[VOLUME_MAX_SEGMENTS],
+                   inout float segT1[VOLUME_MAX_SEGMENTS])
 {
-    vec3 ambient = mix(groundAmbient, skyAmbient, 0.65);  // a cloud sees mostly sky
-    // Light travels along -sunDirection; the eye looks along dir: scattering angle cos = dir . sun.
-    float cosSun = dot(dir, sunDirection);
-    vec3 sunPhase = vec3(smokePhase(cosSun, kSmokeG), 0.7 * smokePhase(cosSun, 0.5 * kSmokeG),
-                         0.5 * smokePhase(cosSun, 0.25 * kSmokeG));
-    int count = int(smokeCount), lights = int(smokeLightCount);
+    int count = int(smokeCount);
+    vec3 inv = 1.0 / (dir + vec3(equal(dir, vec3(0.0))) * 1e-6);
     for (int i = 0; i < SMOKE_MAX_VOLUMES; ++i) {
         if (i >= count) break;
         vec3 lo = smokeBoxMin[i], hi = smokeBoxMin[i] + smokeBoxSize[i];
-        vec3 inv = 1.0 / (dir + vec3(equal(dir, vec3(0.0))) * 1e-6);
         vec3 ta = (lo - origin) * inv, tb = (hi - origin) * inv;
         float t0 = max(max(min(ta.x, tb.x), min(ta.y, tb.y)), max(min(ta.z, tb.z), 0.0));
         float t1 = min(min(max(ta.x, tb.x), max(ta.y, tb.y)), min(max(ta.z, tb.z), maxT));
         if (t1 <= t0) continue;
-        int steps = clamp(int(ceil((t1 - t0) / kSmokeStep)), 1, kSmokeMaxSteps);
-        float dt = (t1 - t0) / float(steps);
-        for (int s = 0; s < kSmokeMaxSteps; ++s) {
-            if (s >= steps) break;
-            vec3 p = origin + dir * (t0 + (float(s) + jitter) * dt);
-            vec3 cell = smokeSample(i, (p - smokeMin[i]) / smokeSize[i]);
-            // Float densities are never quite 0 where the smoke has been: below 0.004 (what the
-            // 8-bit texture rounded to 0; the marched box's threshold, smoke_render.cpp) a step
-            // passes 99.6 %, and the noise and lights are skipped.
-            if (cell.r < 0.004) continue;
-            // Sub-grid detail: two octaves at 1.3 and 2.9 cycles a metre, drifting upwards, on
-            // lattices turned off the world axes.
-            vec3 q = kNoiseTurn * (p + vec3(0.0, -0.3 * smokeTime, 0.0));
-            float detail = 0.55 + 0.6 * smokeNoise(q * 1.3) + 0.3 * (smokeNoise(kNoiseTurn * q * 2.9) - 0.5);
-            float stepT = exp(-smokeSigma * cell.r * detail * dt);
-            float sunT = clamp(cell.g, 0.0, 1.0), sunT2 = sqrt(sunT);
-            vec3 lit = sunColour * dot(sunPhase, vec3(sunT, sunT2, sqrt(sunT2)))
-                     + ambient * mix(kSmokeIndirect, 1.0, clamp(cell.b, 0.0, 1.0));
-            for (int l = 0; l < SMOKE_MAX_LIGHTS; ++l) {
-                if (l >= lights) break;
-                vec3 toLight = smokeLightPosition[l].xyz - p;
-                float d = length(toLight);
-                float f = max(1.0 - d / smokeLightPosition[l].w, 0.0);
-                if (f <= 0.0) continue;
-                float c = dot(dir, toLight) / max(d, 1e-4);
-                lit += smokeLightColour[l].rgb * (f * f * (smokePhase(c, kSmokeG) + 0.5 * smokePhase(c, 0.5 * kSmokeG)));
-            }
-            light += transmittance * (1.0 - stepT) * kSmokeAlbedo * lit;
-            transmittance *= stepT;
-            if (transmittance < 0.003) return;
-        }
+        segT0[n] = t0;
+        segT1[n] = t1;
+        ++n;
     }
+}
+
+// The smoke at p seen along dir: rgb = the light it scatters towards the eye per unit of its
+// extinction (albedo x sun, sky and lamps through the phase), a = its extinction (per metre).
+// Where volumes overlap, their light is averaged by extinction (one volume: its own, exactly).
+vec4 smokeAt(vec3 p, vec3 dir)
+{
+    vec3 ambient = mix(groundAmbient, skyAmbient, 0.65);  // a cloud sees mostly sky
+    // Light travels along -sunDirection; the eye looks along dir: scattering angle cos = dir . sun.
+    float cosSun = dot(dir, sunDirection);
+    vec3 sunPhase = vec3(volumePhase(cosSun, kSmokeG), 0.7 * volumePhase(cosSun, 0.5 * kSmokeG),
+                         0.5 * volumePhase(cosSun, 0.25 * kSmokeG));
+    int count = int(smokeCount), lights = int(smokeLightCount);
+    vec3 scattered = vec3(0.0);
+    float sigma = 0.0;
+    for (int i = 0; i < SMOKE_MAX_VOLUMES; ++i) {
+        if (i >= count) break;
+        vec3 lo = smokeBoxMin[i], hi = lo + smokeBoxSize[i];
+        if (any(lessThan(p, lo)) || any(greaterThan(p, hi))) continue;
+        vec3 cell = smokeSample(i, (p - smokeMin[i]) / smokeSize[i]);
+        // Float densities are never quite 0 where the smoke has been: below 0.004 (what the
+        // 8-bit texture rounded to 0; the marched box's threshold, smoke_render.cpp) a step
+        // passes 99.6 %, and the noise and lights are skipped.
+        if (cell.r < 0.004) continue;
+        // Sub-grid detail: two octaves at 1.3 and 2.9 cycles a metre, drifting upwards, on
+        // lattices turned off the world axes.
+        vec3 q = kNoiseTurn * (p + vec3(0.0, -0.3 * smokeTime, 0.0));
+        float detail = 0.55 + 0.6 * smokeNoise(q * 1.3) + 0.3 * (smokeNoise(kNoiseTurn * q * 2.9) - 0.5);
+        float s = smokeSigma * cell.r * detail;
+        float sunT = clamp(cell.g, 0.0, 1.0), sunT2 = sqrt(sunT);
+        vec3 lit = sunColour * dot(sunPhase, vec3(sunT, sunT2, sqrt(sunT2)))
+                 + ambient * mix(kSmokeIndirect, 1.0, clamp(cell.b, 0.0, 1.0));
+        for (int l = 0; l < SMOKE_MAX_LIGHTS; ++l) {
+            if (l >= lights) break;
+            vec3 toLight = smokeLightPosition[l].xyz - p;
+            float d = length(toLight);
+            float f = max(1.0 - d / smokeLightPosition[l].w, 0.0);
+            if (f <= 0.0) continue;
+            float c = dot(dir, toLight) / max(d, 1e-4);
+            lit += smokeLightColour[l].rgb * (f * f * (volumePhase(c, kSmokeG) + 0.5 * volumePhase(c, 0.5 * kSmokeG)));
+        }
+        lit *= kSmokeAlbedo;
+        if (sigma == 0.0) scattered = lit;
+        else scattered = (scattered * sigma + lit * s) / (sigma + s);
+        sigma += s;
+    }
+    return vec4(scattered, sigma);
 }

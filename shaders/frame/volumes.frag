@@ -1,0 +1,83 @@
+#version 330 core
+// The frame's volumetric pass, at half resolution: every participating medium marched together
+// along each view ray against the G-buffer's linear depth, with ONE transmittance, so a medium in
+// front dims what lies behind it and nothing is counted twice:
+//   smoke  the grenades' volumes (engine_ext/smoke, shaders/smoke/smoke_march.glsl): absorbs and
+//          scatters the sun, the sky, the level's lamps and the signs' light;
+//   haze   a thin scatterer of the signs' light (engine_ext/signs, shaders/signs/sign_march.glsl).
+// The ray's pieces inside any smoke box or sign beam are merged into disjoint segments, marched
+// front to back with a per-pixel jittered start. Per step of length dt, with extinction s (smoke) and
+// source J (light scattered towards the eye per metre), the step adds T J (1 - e^(-s dt)) / s (the
+// integral of the step's source through its own extinction: Hillaire 2015, energy-conserving) and T
+// becomes T e^(-s dt). Writes the in-scattered light (linear HDR) and the transmittance; the output
+// pass upsamples them depth-aware and lays them over the light.
+uniform sampler2D gbufferDepth;  // linear depth at full resolution (bound by the frame)
+uniform vec2 projScale;      // projection matrix [0][0] and [1][1] (set by the frame)
+uniform float flipY;         // 1 when render textures are stored upside down
+uniform mat4 inverseView;    // view -> world
+in vec2 vUv;
+out vec4 fragColour;
+#define VOLUME_MAX_SEGMENTS 6  // SMOKE_MAX_VOLUMES boxes + SIGN_MAX_LIGHTS beams
+#include "smoke_march.glsl"
+#include "sign_march.glsl"
+const float kVolumeStep = 0.25;  // metres: the smoke grid's cell (finer shows no more of it) and
+                                 // a third of a sign's letter at the default size
+const int kVolumeMaxSteps = 64;  // per segment: a 16 m crossing
+
+void main()
+{
+    vec3 light = vec3(0.0);
+    float transmittance = 1.0;
+    ivec2 size = textureSize(gbufferDepth, 0);
+    float depth = texelFetch(gbufferDepth, clamp(ivec2(vUv * vec2(size)), ivec2(0), size - 1), 0).r;
+    vec2 ndc = vec2(vUv.x, flipY > 0.5 ? 1.0 - vUv.y : vUv.y) * 2.0 - 1.0;
+    vec3 viewDir = normalize(vec3(ndc / projScale, -1.0));
+    float maxT = depth > 0.0 ? depth / -viewDir.z : 1e4;
+    vec3 origin = inverseView[3].xyz, dir = normalize(mat3(inverseView) * viewDir);
+
+    float segT0[VOLUME_MAX_SEGMENTS], segT1[VOLUME_MAX_SEGMENTS];
+    int n = 0;
+    smokeSegments(origin, dir, maxT, n, segT0, segT1);
+    signSegments(origin, dir, maxT, n, segT0, segT1);
+    // Front to back (insertion sort of at most 6), overlapping pieces merged.
+    for (int i = 1; i < VOLUME_MAX_SEGMENTS; ++i) {
+        if (i >= n) break;
+        for (int j = i; j > 0 && segT0[j] < segT0[j - 1]; --j) {
+            float a = segT0[j]; segT0[j] = segT0[j - 1]; segT0[j - 1] = a;
+            float b = segT1[j]; segT1[j] = segT1[j - 1]; segT1[j - 1] = b;
+        }
+    }
+    int merged = 0;
+    for (int i = 0; i < VOLUME_MAX_SEGMENTS; ++i) {
+        if (i >= n) break;
+        if (merged > 0 && segT0[i] <= segT1[merged - 1]) {
+            segT1[merged - 1] = max(segT1[merged - 1], segT1[i]);
+        } else {
+            segT0[merged] = segT0[i];
+            segT1[merged] = segT1[i];
+            ++merged;
+        }
+    }
+    // Interleaved gradient noise (Jimenez 2014): the start jitter, stable from frame to frame.
+    float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    bool signs = signCount > 0.5;
+    for (int g = 0; g < VOLUME_MAX_SEGMENTS; ++g) {
+        if (g >= merged || transmittance < 0.003) break;
+        float t0 = segT0[g], t1 = segT1[g];
+        int steps = clamp(int(ceil((t1 - t0) / kVolumeStep)), 1, kVolumeMaxSteps);
+        float dt = (t1 - t0) / float(steps);
+        for (int s = 0; s < kVolumeMaxSteps; ++s) {
+            if (s >= steps) break;
+            vec3 p = origin + dir * (t0 + (float(s) + jitter) * dt);
+            vec4 smoke = smokeAt(p, dir);
+            vec3 signLight = signs ? signScatterAt(p, dir) : vec3(0.0);
+            float stepT = exp(-smoke.a * dt);
+            // (1 - e^(-s dt)) / s, which is dt where the smoke is too thin to dim its own step.
+            float through = smoke.a * dt > 1e-4 ? (1.0 - stepT) / smoke.a : dt;
+            light += transmittance * ((1.0 - stepT) * smoke.rgb + through * (smoke.a * kSmokeAlbedo + signHaze) * signLight);
+            transmittance *= stepT;
+            if (transmittance < 0.003) break;
+        }
+    }
+    fragColour = vec4(light, transmittance);
+}
