@@ -596,3 +596,35 @@ TEST(SignLight, GoodSignsAreReadFacingWhereTheySayWithTheirLamps) {
         EXPECT_GT(*std::max_element(m.distance.begin(), m.distance.end()), 0) << s.text;
     }
 }
+
+// The arena's dark room C (tools/levelgen/make_arena.py, "Room C"): its one light_sign reads without
+// a warning where the script's comment says, and no lamp of the level reaches into the room (the
+// level's point lights cast no shadows, so a lamp's reach through a wall would light it).
+TEST(SignLight, TheArenasDarkRoomHasItsSignAndNoLamp) {
+    std::vector<std::string> warnings;
+    const map::Level level = map::loadLevel((fs::path(OBSCURA_SOURCE_DIR) / "media/levels/arena.map").string());
+    const std::vector<SignSpec> signs = readSignLights(level, {kFontDir}, warnings);
+    ASSERT_EQ(signs.size(), 1u);
+    EXPECT_TRUE(warnings.empty());
+    const SignSpec& s = signs[0];
+    EXPECT_EQ(s.text, "EXIT");
+    expectVec(s.centre, {22.9375, 2.75, -49.75}, "plate centre");
+    expectVec(s.facing, {1, 0, 0}, "facing east along the room");
+    expectVec(s.lamp, {22.6375, 2.75, -49.75}, "lamp");
+    const SignMask m = bakeMask(s, maxPenumbraRadius(s));
+    EXPECT_LT(m.halfWidth, 0.75);  // the plate fits over the 1.5 m doorway
+    EXPECT_LT(s.centre.y - m.halfHeight, 2.75);
+    EXPECT_GT(s.centre.y - m.halfHeight, 2.25 + 0.1);  // clear of the doorway's top
+    // Room C: x 22.5..34.5, y 45.5..55.5 (map metres), 4 m high: world x, -z.
+    ASSERT_GE(level.lights.size(), 12u);
+    for (const map::LevelLight& l : level.lights) {
+        EXPECT_GT(l.radius, 5);  // the arena's lamps reach 6 to 10 m
+        for (double x : {22.5, 28.5, 34.5})
+            for (double y : {45.5, 50.5, 55.5})
+                for (double z : {0.0, 4.0}) {
+                    const Vec3 p{x, z, -y};
+                    EXPECT_GT(length(p - l.position), l.radius) << "a lamp at " << l.position.x << " " << l.position.y << " "
+                                                                 << l.position.z << " reaches " << x << " " << y << " " << z;
+                }
+    }
+}
