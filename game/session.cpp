@@ -80,6 +80,7 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
       sim_(level_, simConfig(settings), colliders_),
       smoke_(level_, colliders_, towardSun, settings.tickRate, settings.smokeResolution),
       decals_(settings, level_, modelSearchDirs(settings), sim_),
+      signs_(level_, {OBSCURA_SIGN_FONT_DIR, std::filesystem::path(settings.level).parent_path().string()}),
       previousPlayer_(sim_.player()) {
     for (std::size_t i = 0; i < sim_.movers().count(); ++i) previousMoverOffsets_.push_back(sim_.movers().offset(i));
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
@@ -95,6 +96,7 @@ void Session::step(const sim::PlayerCommand& cmd) {
         if (e.type == sim::SimEventType::Teleport) previousPlayer_ = sim_.player();
     smoke_.onTick(events, sim_);
     decals_.onTick(events, sim_);
+    signs_.onTick(events);
     hitMarker_ = std::max(0.0, hitMarker_ - durations_.hitMarkerFadePerTick);
     for (const auto& e : events)
         if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;

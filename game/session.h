@@ -7,6 +7,7 @@
 #include "core/triangle_mesh.h"
 #include "core/vec3.h"
 #include "game_decals.h"
+#include "game_signs.h"
 #include "game_smoke.h"
 #include "map/level.h"
 #include "map/load_report.h"
@@ -37,7 +38,8 @@ public:
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
 
-    // One fixed tick: the simulation, then the smoke, the decals and the hit marker from its events.
+    // One fixed tick: the simulation, then the smoke, the decals, the signs' holes and the hit marker
+    // from its events.
     void step(const sim::PlayerCommand& cmd);
     void spawnSmoke(const Vec3& where) { smoke_.spawn(where); }
 
@@ -45,6 +47,7 @@ public:
     const sim::Simulation& sim() const { return sim_; }
     const GameSmoke& smoke() const { return smoke_; }
     const GameDecals& decals() const { return decals_; }
+    const GameSigns& signs() const { return signs_; }
     const std::vector<sim::SimEvent>& events() const { return sim_.events(); }
     std::uint64_t tick() const { return sim_.tick(); }
     const TickDurations& durations() const { return durations_; }
@@ -61,6 +64,7 @@ private:
     sim::Simulation sim_;
     GameSmoke smoke_;
     GameDecals decals_;
+    GameSigns signs_;
     sim::PlayerState previousPlayer_;
     std::vector<Vec3> previousMoverOffsets_;
     double hitMarker_ = 0;  // 1 at a hit, fading over kHitMarkerFadeSeconds

@@ -278,6 +278,11 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
            integer(&S::ssaoSamples, ssao::kSamples.name, ssao::kSamples.min, ssao::kSamples.max)});
     I.add({"view", "what the frame shows at the start: scene, ao, albedo, normal, depth, direct-light, hdr-light (V cycles)",
            str(&S::view)});
+    I.add({"sign-mode", "back-lit signs' light: off, shafts (engine_ext/signs)", [](S& s, W v, W where) {
+               if (v != "off" && v != "shafts") fail(where, "sign-mode", q(v) + ", expected off or shafts");
+               s.signMode = std::string(v);
+           }});
+    I.add({signs::kHaze.name, "haze that shows the signs' shafts, per metre " + rangeText(signs::kHaze), knob(&S::signHaze, signs::kHaze)});
     I.add({frame::kExposure.name, "multiplies the light before the tone map " + rangeText(frame::kExposure),
            knob(&S::exposure, frame::kExposure)});
     I.add({"debug-unsupported-formats", "debug: pretend these render-target formats are missing (comma-separated OGRE "

@@ -6,6 +6,7 @@
 #include "frame/frame_knobs.h"
 #include "map/level.h"
 #include "ssao/ssao_knobs.h"
+#include "signs/sign_knobs.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -69,6 +70,10 @@ struct Settings {
     int debugMaxRenderTargets = 0;  // debug: pretend the GPU has at most this many MRTs (0 = real)
     std::vector<std::string> debugUnsupportedFormats;  // debug: render-target formats pretended missing
     double exposure = frame::kExposure.value;  // engine_ext/frame/frame_knobs.h
+    // The back-lit signs (engine_ext/signs): how their light is drawn (off, shafts: the shafts and
+    // the lettered light on surfaces) and the haze that shows the shafts.
+    std::string signMode = "shafts";
+    double signHaze = signs::kHaze.value;
     std::string view = "scene";  // what the frame shows at the start (V cycles): scene, ao, albedo, ...
     bool aoOnly = false;         // show the AO term alone (P toggles it)
     // Headless runs

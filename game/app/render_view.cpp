@@ -13,6 +13,7 @@
 #include "session.h"
 #include "decals/decal_render.h"
 #include "frame/frame.h"
+#include "signs/sign_render.h"
 #include "smoke/smoke_render.h"
 #include "ssao/ssao_compositor.h"
 
@@ -109,6 +110,14 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     frame_->add(*decals_);
     frame_->add(*ao_);
     frame_->add(*smoke_);
+    // The back-lit signs: their plates in the scene, the lettered light on surfaces (lighting stage)
+    // and the shafts, marched with the smoke in the one volumetric pass.
+    signs_ = std::make_unique<signs::SignRender>(*scene_, session.signs().specs(), session.signs().masks(),
+                                                 static_cast<float>(settings.signHaze),
+                                                 render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
+    signs_->setMode(settings.signMode == "off" ? signs::SignMode::Off : signs::SignMode::Shafts);
+    frame_->add(signs_->surfaces());
+    frame_->add(signs_->shafts());
     // The heightfield mode's height map, over the level's brushes (models stand inside them), with
     // the movers where the simulation starts them.
     if (!level.bounds.empty())
@@ -140,6 +149,7 @@ RenderView::~RenderView() {
     hud_.reset();
     frame_.reset();  // before the techniques plugged into it
     smoke_.reset();
+    signs_.reset();
     combat_.reset();
     ao_.reset();
     decals_.reset();
@@ -278,6 +288,7 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     smoke_->update(smoke.manager(), smoke.version() != smokeUploaded_, static_cast<float>(smoke.seconds()));
     smokeUploaded_ = smoke.version();
     decals_->update(session.decals().list(), session.decals().version());
+    signs_->update(session.signs().holes(), session.signs().version(), render::toOgre(eye_));
     frame_->update(static_cast<float>(smoke.seconds()));
     // The liquids' warp runs on simulation time (replays draw the same frames); the camera's
     // liquid, if any, tints and fogs the view.

@@ -27,6 +27,7 @@ namespace obscura {
 namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; struct LevelGeometryStats; }
 namespace frame { class Frame; }
 namespace smoke { class SmokeRender; }
+namespace signs { class SignRender; }
 namespace ssao { class AmbientOcclusion; }
 namespace decals { class DecalRender; }
 class CombatView;
@@ -120,6 +121,7 @@ private:
     std::unique_ptr<ssao::AmbientOcclusion> ao_;
     std::unique_ptr<smoke::SmokeRender> smoke_;
     std::unique_ptr<decals::DecalRender> decals_;
+    std::unique_ptr<signs::SignRender> signs_;
     std::unique_ptr<frame::Frame> frame_;  // the pass order; ao_, decals_ and smoke_ plug into it
     std::unique_ptr<CombatView> combat_;
     std::unique_ptr<render::Hud> hud_;
