@@ -137,11 +137,13 @@ void SignRender::drawShadow(std::size_t slot) {
     const SignMask& m = masks_[chosen_[slot]];
     const Ogre::Vector3 lamp = ogre(s.lamp), right = ogre(s.right), up = ogre(s.up), facing = ogre(s.facing);
     sh.node->setPosition(lamp);
-    sh.node->setOrientation(Ogre::Quaternion(right, up, -facing));  // the camera looks down its -Z
+    // The camera looks down its -Z; seen from the lamp the plate's right is the camera's left
+    // (facing = right x up, so (-right, up, -facing) is the right-handed frame).
+    sh.node->setOrientation(Ogre::Quaternion(-right, up, -facing));
     const float a = static_cast<float>(std::max(dot(s.centre - s.lamp, s.facing), 1e-3));
     const float near = std::min(0.05f, 0.5f * a);
     // The plate's rectangle relative to the lamp, scaled to the near plane.
-    const float cx = static_cast<float>(dot(s.centre - s.lamp, s.right)), cy = static_cast<float>(dot(s.centre - s.lamp, s.up));
+    const float cx = -static_cast<float>(dot(s.centre - s.lamp, s.right)), cy = static_cast<float>(dot(s.centre - s.lamp, s.up));
     const float k = near / a, hw = static_cast<float>(m.halfWidth), hh = static_cast<float>(m.halfHeight);
     sh.camera->setNearClipDistance(near);
     sh.camera->setFarClipDistance(static_cast<float>(s.range) + a);

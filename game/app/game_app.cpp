@@ -368,13 +368,20 @@ int GameApp::run() {
     return code;
 }
 
+// Bullet holes in the level's signs' plates now (each sign keeps at most SIGN_MAX_HOLES).
+std::size_t GameApp::signHoles() const {
+    std::size_t n = 0;
+    for (const auto& h : session_->signs().holes()) n += h.holes().size();
+    return n;
+}
+
 std::string GameApp::summaryLine() const {
     const auto& p = session_->sim().player();
     char pose[96];
     std::snprintf(pose, sizeof pose, "yaw %.2f pitch %.2f", p.yaw * 180.0 / kPi + 0.0, p.pitch * 180.0 / kPi + 0.0);
     return "summary tick " + std::to_string(session_->tick()) + " shots " + std::to_string(tally_[0]) + " jumps " +
            std::to_string(tally_[1]) + " reloads " + std::to_string(tally_[2]) + " grenades " +
-           std::to_string(tally_[3]) + " ao " + settings_.ssao + " " + pose;
+           std::to_string(tally_[3]) + " ao " + settings_.ssao + " sign-holes " + std::to_string(signHoles()) + " " + pose;
 }
 
 void GameApp::applySetting(const std::string& key, const std::string& value, const std::string& where) {
@@ -384,6 +391,8 @@ void GameApp::applySetting(const std::string& key, const std::string& value, con
         view_->setFov(settings_.fov);
     } else if (key.rfind("ssao", 0) == 0 || key == "ao-only" || key == "exposure") {
         applyAoSettings();
+    } else if (key == "sign-mode" || key == signs::kHaze.name) {
+        view_->setSigns(settings_.signMode, settings_.signHaze);
     } else if (key == "smoke-at") {
         session_->spawnSmoke(parseVec3(settings_.smokeAt));
     } else if (key == "master-volume" || key == "effects-volume") {

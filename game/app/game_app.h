@@ -83,6 +83,7 @@ private:
     std::string rendererDescription() const;
     std::string dataPath(const std::string& relative) const;
     std::string summaryLine() const;
+    std::size_t signHoles() const;
 
     Settings settings_;
     const SettingsParser& parser_;

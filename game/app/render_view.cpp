@@ -115,7 +115,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     signs_ = std::make_unique<signs::SignRender>(*scene_, session.signs().specs(), session.signs().masks(),
                                                  static_cast<float>(settings.signHaze),
                                                  render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
-    signs_->setMode(settings.signMode == "off" ? signs::SignMode::Off : signs::SignMode::Shafts);
+    setSigns(settings.signMode, settings.signHaze);
     frame_->add(signs_->surfaces());
     frame_->add(signs_->shafts());
     // The heightfield mode's height map, over the level's brushes (models stand inside them), with
@@ -168,6 +168,11 @@ RenderView::~RenderView() {
 Ogre::RenderTarget& RenderView::target() {
     if (offscreen_) return *offscreen_->getBuffer()->getRenderTarget();
     return window_;
+}
+
+void RenderView::setSigns(const std::string& mode, double haze) {
+    signs_->setMode(mode == "off" ? signs::SignMode::Off : signs::SignMode::Shafts);
+    signs_->setHaze(static_cast<float>(haze));
 }
 
 void RenderView::applyAo(const AoSettings& a) {

@@ -81,6 +81,8 @@ public:
 
     // Camera: horizontal field of view (degrees); a resized window's new aspect.
     void setFov(double horizontalDegrees);
+    // The back-lit signs: "off" or "shafts", and the haze per metre (settings.signMode, signHaze).
+    void setSigns(const std::string& mode, double haze);
     void resized(int width, int height, double horizontalFov);
 
     // After each simulation tick: effects for its events.
