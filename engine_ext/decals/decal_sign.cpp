@@ -5,8 +5,8 @@
 #include "decals/glyph.h"
 #include "decals/sdf.h"
 #include "map/asset_path.h"
+#include "map/entity_values.h"
 
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -14,7 +14,6 @@
 namespace obscura::decals {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // Defaults: a 1 m plate; 20 cm deep, 10 cm either side of the wall: wider than a brush face's
 // placement error in a hand-made map (a few cm), thinner than any wall the arena has (0.5 m), so
 // a sign never comes through on the other side. The colour: the atlas's old sign tile's off-white.
@@ -27,37 +26,14 @@ const Vec3 kDefaultColour{0.92, 0.9, 0.85};
 // Text is fitted inside this margin of its tile (as the build's "EXIT" tile).
 constexpr double kTextMargin = 0.08;
 
-std::vector<std::string> words(const std::string& s) {
-    std::vector<std::string> out;
-    std::string w;
-    for (char c : s + " ") {
-        if (c == ' ' || c == '\t' || c == ',') {
-            if (!w.empty()) out.push_back(w);
-            w.clear();
-        } else {
-            w += c;
-        }
-    }
-    return out;
-}
-
-// Exactly `n` numbers (locale-independent; "nan" and "inf" parse, the caller checks finiteness).
-bool numbers(const std::string& text, std::size_t n, double* out) {
-    const auto w = words(text);
-    if (w.size() != n) return false;
-    for (std::size_t i = 0; i < n; ++i) {
-        const char* end = w[i].data() + w[i].size();
-        const auto [p, ec] = std::from_chars(w[i].data(), end, out[i]);
-        if (ec != std::errc() || p != end) return false;
-    }
-    return true;
-}
+// The strict readers the back-lit signs share (map/entity_values.h).
+std::vector<std::string> words(const std::string& s) { return map::valueWords(s); }
+bool numbers(const std::string& text, std::size_t n, double* out) { return map::valueNumbers(text, n, out); }
+std::string quoted(const std::string& s) { return map::quotedValue(s); }
 
 struct Skip {
     std::string why;
 };
-
-std::string quoted(const std::string& s) { return "'" + (s.size() > 64 ? s.substr(0, 64) + "..." : s) + "'"; }
 
 SignSpec readSign(const map::Level& level, const map::LevelEntity& e, const std::vector<std::string>& searchDirs) {
     SignSpec s;
@@ -66,28 +42,13 @@ SignSpec readSign(const map::Level& level, const map::LevelEntity& e, const std:
     d.colour = kDefaultColour;
     d.opacity = 1;
     // Where: the compiled origin, but the raw key decides (a non-number may have been read as 0).
-    double v[3];
-    if (!e.has("origin")) throw Skip{"no 'origin'"};
-    const bool parsed = numbers(e.value("origin"), 3, v);
-    if (parsed && !std::isfinite(v[0] + v[1] + v[2])) throw Skip{"non-finite origin " + quoted(e.value("origin"))};
-    if (!parsed || !e.hasOrigin || !std::isfinite(e.origin.x + e.origin.y + e.origin.z))
-        throw Skip{"'origin' is " + quoted(e.value("origin")) + ", expected three numbers"};
-    d.position = e.origin;
+    if (std::string why = map::readOrigin(e, d.position); !why.empty()) throw Skip{why};
 
-    // Facing (Quake axes: x east, y north, z up; to ours: (x, z, -y)).
-    double pitch = 0, yaw = 0, roll = 0;
-    if (e.has("mangle")) {
-        double a[3];
-        if (!numbers(e.value("mangle"), 3, a)) throw Skip{"'mangle' is " + quoted(e.value("mangle")) + ", expected \"pitch yaw roll\" in degrees"};
-        if (!std::isfinite(a[0] + a[1] + a[2])) throw Skip{"non-finite mangle " + quoted(e.value("mangle"))};
-        pitch = a[0], yaw = a[1], roll = a[2];
-    } else if (e.has("angle")) {
-        if (!numbers(e.value("angle"), 1, &yaw)) throw Skip{"'angle' is " + quoted(e.value("angle")) + ", expected degrees"};
-        if (!std::isfinite(yaw)) throw Skip{"non-finite angle " + quoted(e.value("angle"))};
-    }
-    const double p = pitch * kPi / 180, y = yaw * kPi / 180;
-    d.normal = {std::cos(p) * std::cos(y), -std::sin(p), -std::cos(p) * std::sin(y)};
-    d.angle = roll * kPi / 180;
+    // Facing: `mangle` or `angle` (map/entity_values.h: the normal is the orientation's facing).
+    map::Orientation turn;
+    if (std::string why = map::readOrientation(e, turn); !why.empty()) throw Skip{why};
+    d.normal = turn.facing;
+    d.angle = turn.roll;
 
     auto metres = [&](const char* key, double fallback, double hi) {
         if (!e.has(key)) return fallback;
@@ -103,15 +64,7 @@ SignSpec readSign(const map::Level& level, const map::LevelEntity& e, const std:
     d.width = d.height = metres("size", kDefaultSize, kSignMaxSize);
     d.depth = metres("depth", kDefaultDepth, kSignMaxDepth);
 
-    if (e.has("_color")) {
-        double c[3];
-        if (!numbers(e.value("_color"), 3, c) || !std::isfinite(c[0] + c[1] + c[2]))
-            throw Skip{"'_color' is " + quoted(e.value("_color")) + ", expected \"r g b\""};
-        const double scale = std::max({c[0], c[1], c[2]}) > 1 ? 255.0 : 1.0;  // Quake maps write either
-        for (double& x : c)
-            if (x < 0 || x > scale) throw Skip{"'_color' " + quoted(e.value("_color")) + " is outside 0..1 (or 0..255)"};
-        d.colour = {c[0] / scale, c[1] / scale, c[2] / scale};
-    }
+    if (std::string why = map::readColour(e, "_color", d.colour); !why.empty()) throw Skip{why};
 
     d.style = static_cast<int>(DECAL_STYLE_SMOOTH);
     if (e.has("style")) {

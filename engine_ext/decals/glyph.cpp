@@ -12,7 +12,8 @@
 namespace obscura::decals {
 
 namespace {
-constexpr int kCurveSteps = 12;  // lines per curve: <= 8 degrees of turn each for a quarter circle
+constexpr int kCurveSteps = 12;
+constexpr int kUnitsPerEm = 256;  // the outlines' scale (FT_Set_Char_Size at 72 dpi)  // lines per curve: <= 8 degrees of turn each for a quarter circle
 
 struct Builder {
     Shape shape;
@@ -55,9 +56,14 @@ int cubicTo(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void*
     b.pen = p3;
     return 0;
 }
-}  // namespace
 
-Shape textShape(const std::string& fontPath, const std::string& text, double margin) {
+// The outlines at 256 units to the em (y up, the pen from x = 0 on the baseline) and their box.
+struct Raw {
+    Shape shape;
+    double x0 = 1e30, y0 = 1e30, x1 = -1e30, y1 = -1e30;
+};
+
+Raw rawOutlines(const std::string& fontPath, const std::string& text) {
     if (text.empty()) throw BakeError("text decal: the text is empty");
     FT_Library lib = nullptr;
     if (FT_Init_FreeType(&lib)) throw BakeError("text decal: FreeType does not start");
@@ -65,7 +71,7 @@ Shape textShape(const std::string& fontPath, const std::string& text, double mar
     FT_Face face = nullptr;
     if (FT_New_Face(lib, fontPath.c_str(), 0, &face)) throw BakeError(fontPath + ": not a font FreeType can read");
     std::unique_ptr<FT_FaceRec_, FT_Error (*)(FT_Face)> faceGuard(face, &FT_Done_Face);
-    FT_Set_Char_Size(face, 0, 256 * 64, 72, 72);  // 256 units to the em, in 26.6
+    FT_Set_Char_Size(face, 0, kUnitsPerEm * 64, 72, 72);  // 256 units to the em, in 26.6
 
     Builder b;
     FT_Outline_Funcs funcs{};
@@ -82,8 +88,9 @@ Shape textShape(const std::string& fontPath, const std::string& text, double mar
         b.offsetX += face->glyph->advance.x / 64.0;
     }
     // Drop the closing point a contour repeats, and degenerate contours.
-    Shape s;
-    double x0 = 1e30, y0 = 1e30, x1 = -1e30, y1 = -1e30;
+    Raw r;
+    Shape& s = r.shape;
+    double &x0 = r.x0, &y0 = r.y0, &x1 = r.x1, &y1 = r.y1;
     for (auto& c : b.shape.contours) {
         if (c.size() > 1 && c.front().x == c.back().x && c.front().y == c.back().y) c.pop_back();
         if (c.size() < 3) continue;
@@ -93,12 +100,31 @@ Shape textShape(const std::string& fontPath, const std::string& text, double mar
         s.contours.push_back(c);
     }
     if (s.contours.empty()) throw BakeError("text decal: '" + text + "' has no outline in " + fontPath);
+    return r;
+}
+}  // namespace
+
+Shape textShape(const std::string& fontPath, const std::string& text, double margin) {
+    Raw r = rawOutlines(fontPath, text);
+    Shape& s = r.shape;
+    const double x0 = r.x0, y0 = r.y0, x1 = r.x1, y1 = r.y1;
     // Fit into the tile, y down.
     const double scale = (1 - 2 * margin) / std::max(x1 - x0, y1 - y0);
     const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
     for (auto& c : s.contours)
         for (Point& p : c) p = {0.5 + (p.x - cx) * scale, 0.5 - (p.y - cy) * scale};
     return s;
+}
+
+TextLayout textLayout(const std::string& fontPath, const std::string& text) {
+    Raw r = rawOutlines(fontPath, text);
+    constexpr double kEm = 1.0 / kUnitsPerEm;  // a power of two: the scaling is exact
+    TextLayout t;
+    t.shape = std::move(r.shape);
+    for (auto& c : t.shape.contours)
+        for (Point& p : c) p = {p.x * kEm, p.y * kEm};
+    t.x0 = r.x0 * kEm, t.y0 = r.y0 * kEm, t.x1 = r.x1 * kEm, t.y1 = r.y1 * kEm;
+    return t;
 }
 
 }  // namespace obscura::decals

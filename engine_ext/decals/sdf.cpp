@@ -189,13 +189,21 @@ Mask maskFromPng(const std::string& path) {
 
 Mask rasterize(const Shape& shape, int size) {
     if (size <= 0 || size > kMaxMaskEdge) throw BakeError("rasterize: size " + std::to_string(size) + " out of range");
-    Mask m{size, size, std::vector<std::uint8_t>(static_cast<std::size_t>(size) * size)};
+    return rasterize(shape, size, size, size);
+}
+
+Mask rasterize(const Shape& shape, int width, int height, double pixelsPerUnit) {
+    if (width <= 0 || height <= 0 || width > kMaxMaskEdge || height > kMaxMaskEdge)
+        throw BakeError("rasterize: " + std::to_string(width) + " x " + std::to_string(height) + " out of range");
+    if (!(pixelsPerUnit > 0) || !std::isfinite(pixelsPerUnit)) throw BakeError("rasterize: the scale must be positive");
+    const double size = pixelsPerUnit;  // the square's formulas, with its size as the scale
+    Mask m{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height)};
     struct Crossing {
         double x;
         int winding;
     };
     std::vector<Crossing> xs;
-    for (int y = 0; y < size; ++y) {
+    for (int y = 0; y < height; ++y) {
         const double yc = (y + 0.5) / size;
         xs.clear();
         for (const auto& c : shape.contours)
@@ -215,8 +223,8 @@ Mask rasterize(const Shape& shape, int size) {
             if (winding == 0 || k + 1 >= xs.size()) continue;
             // Pixels whose centres lie in [xs[k], xs[k+1]).
             const int x0 = std::max(0, static_cast<int>(std::ceil(xs[k].x * size - 0.5)));
-            const int x1 = std::min(size - 1, static_cast<int>(std::ceil(xs[k + 1].x * size - 0.5)) - 1);
-            for (int x = x0; x <= x1; ++x) m.inside[static_cast<std::size_t>(y) * size + x] = 1;
+            const int x1 = std::min(width - 1, static_cast<int>(std::ceil(xs[k + 1].x * size - 0.5)) - 1);
+            for (int x = x0; x <= x1; ++x) m.inside[static_cast<std::size_t>(y) * width + x] = 1;
         }
     }
     return m;

@@ -65,6 +65,9 @@ constexpr long long kMaxMaskPixels = 4096LL * 4096LL;
 Mask maskFromPng(const std::string& path);
 // Scan-converts `shape` at size x size (nonzero winding, sampled at pixel centres).
 Mask rasterize(const Shape& shape, int size);
+// The same at width x height pixels, a shape unit being `pixelsPerUnit` pixels (the square one is
+// rasterize(shape, size, size, size)): the shape's (0, 0) at the top-left corner, y down.
+Mask rasterize(const Shape& shape, int width, int height, double pixelsPerUnit);
 // Simple vector shapes in unit coordinates: a disc; a square (rotated by `degrees` about the centre);
 // a ring; a star with `points` points.
 Shape circleShape(double cx, double cy, double r, int segments = 256);

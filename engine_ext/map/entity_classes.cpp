@@ -139,6 +139,26 @@ std::vector<EntityClass> makeClasses() {
                   key("_color", T::Colour, "0.92 0.9 0.85", "Tint, 0..1 or 0..255"),
                   key("style", T::String, "smooth", "Words among alpha, smooth, outline, glow, shadow")},
                  "255 255 255", "-4 -4 -4, 4 4 4"});
+    // engine_ext/signs/sign_light.cpp readSign (the SignSpec defaults in sign_light.h).
+    c.push_back({"light_sign", EntityKind::Point, R::Game, BrushRole::Solid,
+                 "A back-lit text sign: an opaque plate centred at the origin, lit only through its letters by a lamp "
+                 "behind it (light shafts in smoke, lettered light on what it faces)",
+                 {},
+                 {key("text", T::String, "", "Text of the letters (1 to 48 characters)"),
+                  key("font", T::String, "DejaVuSans-Bold.ttf", "Font file name, looked up in the font folder"),
+                  key("angle", T::Float, "0", "Yaw the sign faces, degrees (its light travels that way)"),
+                  key("mangle", T::String, "", "'pitch yaw roll' in degrees (pitch down positive); wins over 'angle'"),
+                  key("size", T::Float, "0.4", "Letter height (the font's em), metres (up to 4)"),
+                  key("margin", T::Float, "0.1", "Plate around the text on every side, metres (0 to 4)"),
+                  key("_color", T::Colour, "1 0.85 0.6", "Light colour, 0..1 or 0..255"),
+                  key("light", T::Float, "6", "Intensity: irradiance at 1 m straight through a letter (0 to 1000)"),
+                  key("plate_color", T::Colour, "0.05 0.05 0.06", "Colour of the plate's front, 0..1 or 0..255"),
+                  key("light_distance", T::Float, "0.3", "Lamp distance behind the plate's centre, metres (up to 8)"),
+                  key("light_origin", T::String, "", "Lamp position 'x y z' in map units, behind the plate; wins over 'light_distance'"),
+                  key("light_radius", T::Float, "0.03", "Lamp sphere radius, metres (up to 1): the penumbra's width"),
+                  key("cone", T::Float, "75", "Half angle of the lamp's cone about the facing, degrees (1 to 90)"),
+                  key("range", T::Float, "12", "Metres from the lamp where the light has faded out (up to 64)")},
+                 "255 200 120", "-4 -4 -4, 4 4 4"});
     c.push_back({"info_sign", EntityKind::Point, R::Marker, BrushRole::Solid,
                  "Marks the arena's sign wall for tools/levelgen's self-check; the game draws nothing for it (decal_sign "
                  "paints signs)",

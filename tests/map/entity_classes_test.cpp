@@ -35,7 +35,7 @@ TEST(EntityClasses, EveryClassTheGameReadsIsKnown) {
     // The classes engine_ext/ and game/ look for by name, and the Quake classes the brief lists.
     for (const char* c : {"worldspawn", "info_player_start", "info_player_deathmatch", "info_player_coop", "light",
                           "light_flame_small_yellow", "misc_model", "prop_crate", "prop_barrel", "target_popup", "target_moving",
-                          "decal_sign", "info_sign", "func_door", "func_door_secret", "func_plat", "func_button", "func_train",
+                          "decal_sign", "light_sign", "info_sign", "func_door", "func_door_secret", "func_plat", "func_button", "func_train",
                           "path_corner", "trigger_multiple", "trigger_once", "trigger_teleport", "trigger_push",
                           "info_teleport_destination", "func_wall", "func_illusionary", "func_detail", "func_detail_wall",
                           "func_detail_illusionary", "func_group"})

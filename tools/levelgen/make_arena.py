@@ -136,6 +136,7 @@ def point(x, y, z):
 # Doorways: 1.5 m wide, 2.25 m high (the player is 1.8 m; 72 units keeps the grid integral). The
 # two corridor mouths of the 2 m corridor between room A and the courtyard are the corridor's width.
 DOOR_W, DOOR_H = 1.5, 2.25
+SIGN_DOOR_Y = 49.0  # the doorway east out of room B, to the dark sign room C (y 49-50.5)
 
 # --- Courtyard: 24 x 24 m, open to the sky, 12 m brick walls. The east wall's inner face is the
 # free wall for the back-lit sign.
@@ -175,7 +176,8 @@ add(box(7, 34.5, 3.5, 10.5, 37.5, 4.0, "plaster"))
 
 # --- Room B: 14 x 14 m, 6 m high, with stairs (10 steps of 0.25 m rise, 0.375 m run: 12 units, the
 # first whole-unit tread at least 0.35 m deep) up to a 2.5 m mezzanine.
-room(2, 38, 16, 52, 6, "plaster", "wood_trim", "plaster", doors={"s": [(8.0, DOOR_W, DOOR_H)]})
+room(2, 38, 16, 52, 6, "plaster", "wood_trim", "plaster",
+     doors={"s": [(8.0, DOOR_W, DOOR_H)], "e": [(SIGN_DOOR_Y, DOOR_W, DOOR_H)]})
 stairs_y(12, 15.5, 40, 0, 10, 0.25, 0.375, "wood_trim")
 add(box(2, 43.75, 2.25, 16, 52, 2.5, "wood_trim"))  # mezzanine floor
 add(box(2, 43.75, 0, 2.5, 44.25, 2.25, "metal_floor"))  # its supports
@@ -192,6 +194,28 @@ entity("decal_sign", origin=point(16, 42, 3.25), angle="180", text="UP", size="0
        _color="0.7 0.12 0.05", style="smooth outline")
 entity("decal_sign", origin=point(2, 40.5, 1.625), angle="0", text="EXIT", size="0.8",
        _color="0.1 0.6 0.15", style="smooth glow")
+
+# --- Room C, the dark sign room (issue 15, engine_ext/signs): x 22.5-34.5, y 45.5-55.5 (12 x 10 m),
+# 4 m high, concrete, behind the courtyard's north wall; no lamp of its own, no sky (no lamp's reach
+# gets into it either: point lights cast no shadows here, so it lies over 13 m from room B's, whose
+# reach is 6.9 and 10 m; tests/signs checks it). Reached from room B through a doorway in room B's
+# east wall under the mezzanine (y 49-50.5) and a 5.5 m corridor (x 16.5-22, 3 m high). Its only
+# light is the back-lit `light_sign` "EXIT" over the doorway in its west wall, facing east along the
+# room: the plate's centre at (22.9375, 49.75, 2.75) (0.44 m in front of the west wall; the plate's
+# bottom edge ~0.25 m over the doorway's 2.25 m top), the lamp 0.3 m behind it at
+# (22.6375, 49.75, 2.75), 11.9 m from the far (east) wall (range 16 so the light reaches it). In the
+# game's world (x, z, -y): plate (22.9375, 2.75, -49.75), lamp (22.6375, 2.75, -49.75). Camera
+# poses (--start-pose / a replay's `start`, "x y z yaw pitch"): looking back at the sign across the
+# room "32 1.65 -52 104 -5"; from beside the doorway along the light to the far wall "24 1.65 -48 -90 -8".
+SIGN_ROOM = dict(x0=22.5, y0=45.5, x1=34.5, y1=55.5, height=4)
+add(box(16.5, SIGN_DOOR_Y, -0.5, 22, SIGN_DOOR_Y + DOOR_W, 0, "concrete"))             # corridor floor
+add(box(16.5, SIGN_DOOR_Y - 0.5, 0, 22, SIGN_DOOR_Y, 3, "concrete"))                   # its walls
+add(box(16.5, SIGN_DOOR_Y + DOOR_W, 0, 22, SIGN_DOOR_Y + DOOR_W + 0.5, 3, "concrete"))
+add(box(16.5, SIGN_DOOR_Y - 0.5, 3, 22, SIGN_DOOR_Y + DOOR_W + 0.5, 3.5, "concrete"))  # its ceiling
+room(SIGN_ROOM["x0"], SIGN_ROOM["y0"], SIGN_ROOM["x1"], SIGN_ROOM["y1"], SIGN_ROOM["height"], "concrete", "concrete",
+     "concrete", doors={"w": [(SIGN_DOOR_Y, DOOR_W, DOOR_H)]})
+entity("light_sign", origin=point(SIGN_ROOM["x0"] + 0.4375, SIGN_DOOR_Y + DOOR_W / 2, 2.75), angle="0", text="EXIT",
+       size="0.4", margin="0.1", light_distance="0.3", range="16")
 
 # --- Firing range: 42 x 6 m, 5 m high, reached from the courtyard through a corridor.
 room(10, 3, 52, 9, 5, "concrete", "concrete", "concrete", doors={"n": [(30.5, DOOR_W, DOOR_H)]})
@@ -277,11 +301,11 @@ def plan(out, step_x=1, step_y=1, z=1):
     """Top view in a band at height z..z+0.5 m, one character per step_x by step_y metres:
     '#' walls (taller than the band), '-' low things (counter, cover, stair steps), 'c' clip, and
     the point entities on top: P player start, D deathmatch start, S sign, x crates, o barrels,
-    T pop-up targets, M moving targets (the middle of their track), * lights."""
+    T pop-up targets, M moving targets (the middle of their track), * lights, E the back-lit sign."""
     solids = [Brush(b, "") for b in brushes if b[0][1] != "sky"]
     marks = {"info_player_start": "P", "info_player_deathmatch": "D", "info_sign": "S", "prop_crate": "x",
-             "prop_barrel": "o", "target_popup": "T", "target_moving": "M", "light": "*"}
-    cols, rows = 55, 55
+             "prop_barrel": "o", "target_popup": "T", "target_moving": "M", "light": "*", "light_sign": "E"}
+    cols, rows = 55, 57
     grid = [[" "] * cols for _ in range(rows)]
     for r in range(rows):
         for c in range(cols):
