@@ -8,6 +8,7 @@
 
 #include "core/triangle_mesh.h"
 #include "core/vec3.h"
+#include "raytrace/camera_pose.h"
 
 #include <cstdint>
 #include <memory>
@@ -15,11 +16,7 @@
 
 namespace obscura::ssao {
 
-struct CameraPose {
-    Vec3 eye;
-    double yaw = 0, pitch = 0;  // radians; the game's convention (yaw about +Y, 0 faces -Z)
-    double fovX = 90;           // horizontal field of view, degrees
-};
+using obscura::CameraPose;  // raytrace/camera_pose.h
 
 struct AoImage {
     int width = 0, height = 0;

@@ -12,8 +12,7 @@
 #include "aoref/ao_compare.h"
 #include "core/image.h"
 #include "map/map_compile.h"
-#include "mesh/model_path.h"
-#include "mesh/ogre_mesh_reader.h"
+#include "raytrace/level_triangles.h"
 #include "ssao/ao_reference.h"
 
 #include <boost/program_options.hpp>
@@ -22,51 +21,9 @@
 #include <filesystem>
 #include <cmath>
 #include <iostream>
-#include <sstream>
 
 namespace po = boost::program_options;
 using namespace obscura;
-
-namespace {
-// Visible, non-sky brush faces as triangles: what the game renders into its G-buffer.
-std::vector<TriangleMesh> levelTriangles(const map::Level& level) {
-    TriangleMesh m;
-    for (const auto& b : level.brushes)
-        for (const auto& f : b.faces) {
-            if (!f.visible || f.sky) continue;  // sky: map/surface_rules.h (fences are solid here: no alpha)
-            const auto base = static_cast<std::uint32_t>(m.vertices.size());
-            for (const auto& v : f.vertices) m.vertices.push_back(v.position);
-            for (std::uint32_t i = 1; i + 1 < f.vertices.size(); ++i)
-                m.indices.insert(m.indices.end(), {base, base + i, base + i + 1});
-        }
-    return {m};
-}
-
-// misc_model meshes read by the plain .mesh reader, placed exactly as the game places them
-// (mesh::Transform is render::modelTransform, bit for bit).
-void addModelTriangles(const map::Level& level, const std::vector<std::string>& searchDirs, std::vector<TriangleMesh>& out) {
-    for (const auto& m : level.models) {
-        const std::string file = mesh::findModelFile(m.mesh, searchDirs);
-        if (file.empty()) throw std::runtime_error(level.sourcePath + ": misc_model mesh '" + m.mesh + "' not found");
-        const mesh::MeshFile meshFile = mesh::readOgreMesh(file);
-        out.push_back(mesh::meshTriangles(meshFile, {m.origin, m.yaw, m.scale}));
-        std::cerr << "aoref: model " << m.mesh << " bounds ";
-        if (meshFile.bounds) {
-            // as Ogre::Vector3 prints (single precision)
-            auto print = [](const Vec3& v) {
-                std::cerr << "Vector3(" << static_cast<float>(v.x) << ", " << static_cast<float>(v.y) << ", "
-                          << static_cast<float>(v.z) << ")";
-            };
-            print(meshFile.bounds->min);
-            std::cerr << " .. ";
-            print(meshFile.bounds->max);
-        } else {
-            std::cerr << "(none in the file)";
-        }
-        std::cerr << "\n";
-    }
-}
-}  // namespace
 
 int main(int argc, char** argv) {
     std::string levelPath, poseText, out;
@@ -85,17 +42,12 @@ int main(int argc, char** argv) {
         po::variables_map vm;
         po::store(po::parse_command_line(argc, argv, desc), vm);
         po::notify(vm);
-        std::istringstream is(poseText);
-        ssao::CameraPose pose;
-        double yaw, pitch;
-        if (!(is >> pose.eye.x >> pose.eye.y >> pose.eye.z >> yaw >> pitch)) throw po::error("--pose needs 'x y z yaw pitch'");
-        pose.yaw = yaw * 3.14159265358979323846 / 180.0;
-        pose.pitch = pitch * 3.14159265358979323846 / 180.0;
-        pose.fovX = fov;
+        CameraPose pose;
+        if (!parsePose(poseText, fov, pose)) throw po::error("--pose needs 'x y z yaw pitch'");
 
         const map::Level level = map::loadLevel(levelPath);
         auto triangles = levelTriangles(level);
-        addModelTriangles(level, {std::filesystem::path(levelPath).parent_path().string(), OBSCURA_DATA_DIR, "."}, triangles);
+        addModelTriangles(level, {std::filesystem::path(levelPath).parent_path().string(), OBSCURA_DATA_DIR, "."}, triangles, "aoref");
         const ssao::AoReference ref(triangles);
         const auto t0 = std::chrono::steady_clock::now();
         const ssao::AoImage img = ref.render(pose, width, height, radius, rays, 2);
