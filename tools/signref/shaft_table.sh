@@ -4,6 +4,8 @@
 # haze and smoke, as RMSE over rgb, beside the RMSE of no shafts at all (an all-zero frame: the
 # baseline) and their ratio (game / off: below 1 the shafts help, 0 is perfect). Images and
 # results land in $OUT (default build/shaft_table/), the markdown table on stdout and in table.md.
+# Beside them, the header's law integrated by the reference (--law) against the truth: the part of
+# the game's error that is the law's (a spherical lamp seen obliquely: README) and not its pass's.
 #
 # Usage: xvfb-run -a -s "-screen 0 1920x1080x24" tools/signref/shaft_table.sh [GAME]
 #        (GAME defaults to build/game/obscura; after scripts/build.sh or a build of obscura and
@@ -67,19 +69,23 @@ for v in "${views[@]}"; do
   line=$("$ref" --level "$level" --pose "$used" --fov "$FOV" --haze "$HAZE" "${smoke_args[@]}" --spp "$SPP" --step "$STEP" \
            --lamp-samples "$LAMP" --threads "$THREADS" --out "$OUT/${name}_ref.pfm" --png "$OUT/${name}_ref.png" \
            --compare "$vol" 2> "$OUT/${name}_ref.log" | grep '^signref ')
+  # the game's law (signIrradiance, one occlusion ray) by the same integrator against the truth:
+  # the error a perfect estimator of the law would still have
+  law=$("$ref" --level "$level" --pose "$used" --fov "$FOV" --haze "$HAZE" "${smoke_args[@]}" --spp "$SPP" --step "$STEP" \
+          --law --threads "$THREADS" --compare "$OUT/${name}_ref.pfm" 2>> "$OUT/${name}_ref.log" | sed -n 's/^signref rmse=\([^ ]*\).*/\1/p')
   rmse=$(sed -n 's/.* rmse=\([^ ]*\).*/\1/p' <<< "$line")
   off=$(sed -n 's/.* rmse_off=\([^ ]*\).*/\1/p' <<< "$line")
   mean=$(sed -n 's/.* mean_ref=\([^ ]*\).*/\1/p' <<< "$line")
   ratio=$(awk -v a="$rmse" -v b="$off" 'BEGIN { if (b > 0) printf "%.3f", a / b; else print "n/a" }')
   smoke_note=no; [ -s "$smoke" ] && smoke_note=yes
-  rows+=("| $name | \`$used\` | $smoke_note | $rmse | $off | $ratio | $mean |")
+  rows+=("| $name | \`$used\` | $smoke_note | $rmse | $off | $ratio | $law | $mean |")
   echo "$line view=$name" >> "$OUT/results.txt"
 done
 
 {
-  echo "RMSE over rgb of the game's half-resolution volume buffer against obscura_signref (spp $SPP, step $STEP m, $LAMP lamp samples, haze $HAZE/m); off = an all-zero buffer (no shafts); ratio = game / off."
+  echo "RMSE over rgb of the game's half-resolution volume buffer against obscura_signref (spp $SPP, step $STEP m, $LAMP lamp samples, haze $HAZE/m); off = an all-zero buffer (no shafts); ratio = game / off; RMSE law = the header's law (throughSign, one occlusion ray) integrated the same way, against the truth: the floor for an exact estimator of the law."
   echo
-  echo "| view | pose | smoke | RMSE game | RMSE off | ratio | mean ref |"
-  echo "|---|---|---|---|---|---|---|"
+  echo "| view | pose | smoke | RMSE game | RMSE off | ratio | RMSE law | mean ref |"
+  echo "|---|---|---|---|---|---|---|---|"
   printf '%s\n' "${rows[@]}"
 } | tee "$OUT/table.md"
