@@ -1,6 +1,8 @@
 // See pfm.h.
 #include "core/pfm.h"
 
+#include "core/byte_order.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -10,20 +12,6 @@
 namespace obscura {
 
 namespace {
-bool hostLittleEndian() {
-    const std::uint32_t one = 1;
-    unsigned char b[4];
-    std::memcpy(b, &one, 4);
-    return b[0] == 1;
-}
-float swapped(float f) {
-    unsigned char b[4];
-    std::memcpy(b, &f, 4);
-    std::swap(b[0], b[3]);
-    std::swap(b[1], b[2]);
-    std::memcpy(&f, b, 4);
-    return f;
-}
 // One whitespace-separated header token; PFM allows any whitespace between them.
 std::string token(std::istream& in) {
     std::string t;
@@ -44,7 +32,7 @@ void writePfm(const FloatImage& image, const std::string& path) {
     std::vector<float> row(static_cast<std::size_t>(image.width) * 3);
     for (int y = image.height - 1; y >= 0; --y) {  // bottom row first
         const float* src = image.rgb.data() + static_cast<std::size_t>(y) * image.width * 3;
-        for (std::size_t i = 0; i < row.size(); ++i) row[i] = swap ? swapped(src[i]) : src[i];
+        for (std::size_t i = 0; i < row.size(); ++i) row[i] = swap ? byteSwapped(src[i]) : src[i];
         out.write(reinterpret_cast<const char*>(row.data()), static_cast<std::streamsize>(row.size() * sizeof(float)));
     }
     if (!out) throw ImageError(path + ": write failed");
@@ -90,7 +78,7 @@ FloatImage readPfm(const std::string& path) {
         for (long x = 0; x < w; ++x)
             for (int c = 0; c < 3; ++c) {
                 float f = data[srcRow + static_cast<std::size_t>(x) * channels + (channels == 3 ? c : 0)];
-                img.rgb[(static_cast<std::size_t>(y) * w + x) * 3 + c] = swap ? swapped(f) : f;
+                img.rgb[(static_cast<std::size_t>(y) * w + x) * 3 + c] = swap ? byteSwapped(f) : f;
             }
     }
     return img;

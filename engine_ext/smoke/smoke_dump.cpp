@@ -1,6 +1,8 @@
 // See smoke_dump.h.
 #include "smoke/smoke_dump.h"
 
+#include "core/byte_order.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -15,20 +17,6 @@ namespace obscura::smoke {
 
 namespace {
 constexpr long kMaxCells = 1L << 26;  // 64 M cells a volume: far beyond any grid the game makes
-
-bool hostLittleEndian() {
-    const std::uint32_t one = 1;
-    unsigned char b[4];
-    std::memcpy(b, &one, 4);
-    return b[0] == 1;
-}
-void swap4(float& f) {
-    unsigned char b[4];
-    std::memcpy(b, &f, 4);
-    std::swap(b[0], b[3]);
-    std::swap(b[1], b[2]);
-    std::memcpy(&f, b, 4);
-}
 
 struct Reader {
     std::istream& in;
@@ -123,7 +111,7 @@ SmokeDump readSmokeDump(std::istream& in, const std::string& name) {
             r.fail(what + ": the densities end after " + std::to_string(in.gcount()) + " of " +
                    std::to_string(cells * sizeof(float)) + " bytes");
         for (float& f : vol.density) {
-            if (swap) swap4(f);
+            if (swap) f = byteSwapped(f);
             if (!std::isfinite(f)) r.fail(what + ": a density is not finite");
         }
         dump.volumes.push_back(std::move(vol));
@@ -147,7 +135,7 @@ void writeSmokeDump(const SmokeDump& dump, std::ostream& out) {
         out << "volume " << v.nx << " " << v.ny << " " << v.nz << " " << v.origin.x << " " << v.origin.y << " "
             << v.origin.z << " " << v.cellSize << "\n";
         for (float f : v.density) {
-            if (swap) swap4(f);
+            if (swap) f = byteSwapped(f);
             out.write(reinterpret_cast<const char*>(&f), sizeof f);
         }
     }

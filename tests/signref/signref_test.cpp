@@ -229,3 +229,28 @@ TEST(SignrefMedium, SmokeAddsExtinctionAndItsAlbedo) {
     m.at(p, st, ss);
     EXPECT_EQ(st, 0.1);
 }
+
+TEST(SignrefLaw, AgreesWithTheTruthWhereTheLawIsExactAndSeesWalls) {
+    // An open plate and a tiny lamp: throughSign is 1 where the truth's share is 1.
+    const RayScene empty({});
+    const Medium haze{0.1, nullptr};
+    const ShaftReference ref(empty, {testSign(1e-4, kOpen)}, haze);
+    const Vec3 eye{0.5, 0.2, 4}, dir = normalize(Vec3{-0.1, 0, -1});
+    ShaftOptions opt;
+    opt.step = 0.05;
+    opt.lampSamples = 2;
+    Rng r1(9), r2(9);
+    const Vec3 truth = ref.alongRay(eye, dir, 5, opt, r1);
+    opt.law = true;
+    const Vec3 law = ref.alongRay(eye, dir, 5, opt, r2);
+    EXPECT_NEAR(law.x / truth.x, 1, 1e-9);
+    // a wall between the point and the plate hides the law's light too
+    TriangleMesh wall;
+    wall.vertices = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+    wall.indices = {0, 1, 2, 0, 2, 3};
+    const RayScene scene({wall});
+    const SignLight sign = testSign(0.03, kOpen);
+    EXPECT_EQ(lawIrradiance(sign, &scene, {0.2, 0.1, 2}).x, 0.0);
+    EXPECT_GT(lawIrradiance(sign, &scene, {0.2, 0.1, 0.5}).x, 0.0);
+    EXPECT_EQ(lawIrradiance(sign, nullptr, {0.2, 0.1, 2}).x, signs::signIrradiance(sign.spec, sign.mask, sign.holes, {0.2, 0.1, 2}).x);
+}

@@ -4,7 +4,7 @@
 //
 //   render   obscura_signref --level L --pose "x y z yaw pitch" [--fov 90] [--width 640 --height 360]
 //              [--haze 0.02] [--smoke smoke.dump] [--spp 4] [--step 0.02] [--lamp-samples 16]
-//              [--far 50] [--threads N] [--seed 1] [--spread M] [--hole "sign x y r"]...
+//              [--far 50] [--threads N] [--seed 1] [--spread M] [--hole "sign x y r"]... [--law]
 //              [--out ref.pfm] [--png preview.png [--preview-scale S]] [--compare game.pfm]...
 //            prints per --compare: "signref rmse=... rmse_off=... mean_ref=... max_ref=... pixels=...
 //            channels=rgb file=..."
@@ -174,6 +174,7 @@ int main(int argc, char** argv) {
         ("font-dir", po::value(&fontDirs)->composing(), "where fonts are looked for (/usr/share/fonts/truetype/dejavu)")
         ("no-cull", "sample the lamp at every point (no footprint test)")
         ("no-geometry", "no occlusion by the level between a point and the plate")
+        ("law", "E from the game's law (signIrradiance + one occlusion ray), not the sampled lamp")
         ("out", po::value(&out), "the reference, PFM (rgb in-scattered radiance)")
         ("png", po::value(&png), "a preview PNG")("preview-scale", po::value(&previewScale), "the preview's exposure (auto)")
         ("compare", po::value(&compare)->composing(), "the game's volume buffer dump (PFM), repeatable")
@@ -195,6 +196,7 @@ int main(int argc, char** argv) {
         if (fontDirs.empty()) fontDirs.push_back("/usr/share/fonts/truetype/dejavu");
         opt.cull = !vm.count("no-cull");
         opt.geometry = !vm.count("no-geometry");
+        opt.law = vm.count("law") > 0;
         if (!(opt.step > 0) || !std::isfinite(opt.step)) throw po::error("--step must be a positive number of metres");
         if (opt.spp < 1) throw po::error("--spp must be at least 1");
         if (vm.count("lamp-samples") && lampSamples < 1) throw po::error("--lamp-samples must be at least 1");
@@ -261,7 +263,7 @@ int main(int argc, char** argv) {
         const FloatImage img = ref.render(pose, width, height, opt, threads);
         const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         std::cerr << "signref: " << width << "x" << height << ", " << opt.spp << " rays a pixel, " << opt.step << " m steps, "
-                  << opt.lampSamples << " lamp samples, in " << secs << " s on " << threads << " threads\n";
+                  << (opt.law ? std::string("the law's light (not the truth)") : std::to_string(opt.lampSamples) + " lamp samples") << ", in " << secs << " s on " << threads << " threads\n";
         if (!out.empty()) writePfm(img, out);
         if (!png.empty()) writePreview(img, previewScale, png);
         for (std::size_t i = 0; i < games.size(); ++i) {

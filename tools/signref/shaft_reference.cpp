@@ -13,11 +13,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTnear = 1e-4;  // metres: occlusion rays start and stop this far from their ends
 
-double smoothstep(double e0, double e1, double x) {
-    const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-    return t * t * (3 - 2 * t);
-}
-
 // An orthonormal frame (t, b) around the unit vector n.
 void frame(const Vec3& n, Vec3& t, Vec3& b) {
     const Vec3 a = std::fabs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
@@ -40,14 +35,26 @@ double phaseHG(double cosTheta, double g) {
 }
 
 Vec3 unshadowedIrradiance(const signs::SignSpec& sign, const Vec3& p) {
-    if (!(dot(p - sign.centre, sign.facing) > 0)) return {};
-    const double d = length(p - sign.lamp);
-    const double f = d / sign.range, f4 = f * f * f * f;
-    const double w = std::clamp(1 - f4, 0.0, 1.0);
-    const double cone = kPi / 180 * sign.coneDegrees;
-    const double inCone = smoothstep(std::cos(cone), std::cos(0.85 * cone), dot(normalize(p - sign.lamp), sign.facing));
-    const double r = std::max(d, sign.lightRadius);
-    return sign.lightColour * (sign.intensity * inCone * w * w / (r * r));
+    // signIrradiance through a plate open everywhere: throughSign is then the cone alone, and the
+    // cone and the window stay defined in one place (sign_light.cpp).
+    static const signs::SignMask open = [] {
+        signs::SignMask m;
+        m.width = m.height = 1;
+        m.texel = m.halfWidth = m.halfHeight = m.spread = 1e30;
+        m.distance = {1e30f};
+        return m;
+    }();
+    return signs::signIrradiance(sign, open, {}, p);
+}
+
+Vec3 lawIrradiance(const SignLight& sign, const RayScene* scene, const Vec3& p) {
+    const Vec3 e = signs::signIrradiance(sign.spec, sign.mask, sign.holes, p);
+    if (!scene || (e.x == 0 && e.y == 0 && e.z == 0)) return e;
+    // one occlusion ray, towards the lamp's centre, as far as the plate's plane
+    const Vec3 toLamp = sign.spec.lamp - p;
+    const double b = dot(p - sign.spec.centre, sign.spec.facing), a = dot(sign.spec.centre - sign.spec.lamp, sign.spec.facing);
+    const double dist = length(toLamp) * b / (a + b);
+    return scene->occluded(p, normalize(toLamp), kTnear, dist - kTnear) ? Vec3{} : e;
 }
 
 double lampShare(const SignLight& sign, const RayScene* scene, const Vec3& p, int samples, Rng& rng) {
@@ -132,6 +139,11 @@ Vec3 ShaftReference::alongRay(const Vec3& eye, const Vec3& dir, double tmax, con
             // Each point's lamp samples have their own stream, drawn whether or not they are
             // taken: culling changes no other point's samples (the tests compare cull on and off).
             const std::uint64_t hi = rng.nextU32(), lo = rng.nextU32();
+            if (opt.law) {
+                source += lawIrradiance(sign, opt.geometry ? &scene_ : nullptr, p) *
+                          phaseHG(dot(dir, normalize(p - sign.spec.lamp)), kShaftG);
+                continue;
+            }
             const Vec3 e0 = unshadowedIrradiance(sign.spec, p);
             if (e0.x == 0 && e0.y == 0 && e0.z == 0) continue;
             Rng lampRng((hi << 32) | lo);

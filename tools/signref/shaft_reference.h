@@ -55,6 +55,10 @@ struct ShaftOptions {
     // or hole is within 1.5x its size (the bilinear field changes by at most sqrt(2) a metre):
     // the samples would all be shut. Off: every point is sampled (the tests compare the two).
     bool cull = true;
+    // The game's law instead of the truth: lawIrradiance (signIrradiance, throughSign's disc
+    // formula, and one occlusion ray to the lamp's centre) for E. Not the truth: it shows how much
+    // of a game figure is the law's and how much the estimator's (README).
+    bool law = false;
     std::uint64_t seed = 1;
 };
 
@@ -62,6 +66,10 @@ struct ShaftOptions {
 // window(d) / max(d, lightRadius)^2, the factors signIrradiance multiplies throughSign by
 // (sign_light.h); 0 where p is not in front of the plate.
 Vec3 unshadowedIrradiance(const signs::SignSpec& sign, const Vec3& p);
+
+// signIrradiance (the header's law) at p, and 0 where the level blocks the segment from p to
+// the plate on the way to the lamp's centre (when `scene` is given).
+Vec3 lawIrradiance(const SignLight& sign, const RayScene* scene, const Vec3& p);
 
 // The share (0..1) of the lamp's sphere seen from p through the plate, `samples` stratified
 // directions (at least 1), and through the level when `scene` is given.
