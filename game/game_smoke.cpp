@@ -1,6 +1,7 @@
 // See game_smoke.h.
 #include "game_smoke.h"
 
+#include "smoke/smoke_shared.h"
 #include "smoke_obstacles.h"
 #include "tick_durations.h"
 
@@ -62,6 +63,26 @@ void GameSmoke::onTick(const std::vector<sim::SimEvent>& events, const sim::Simu
     manager_.step(tickSeconds_ * static_cast<double>(ticksPerStep_));
     manager_.computeTransmittance(towardSun_);
     ++version_;
+}
+
+smoke::SmokeDump GameSmoke::dump() const {
+    smoke::SmokeDump d;
+    d.time = seconds();
+    d.sigma = manager_.settings().shadowSigma;
+    std::vector<float> rgb;
+    for (const auto& entry : manager_.volumes()) {
+        if (d.volumes.size() == SMOKE_MAX_VOLUMES) break;
+        const smoke::GridInfo& g = entry.volume.grid();
+        entry.volume.exportRGBFloat(rgb);  // density, transmittance to the sun, sky: as uploaded
+        smoke::DumpVolume v;
+        v.nx = g.nx, v.ny = g.ny, v.nz = g.nz;
+        v.origin = g.origin;
+        v.cellSize = g.cellSize;
+        v.density.resize(rgb.size() / 3);
+        for (std::size_t i = 0; i < v.density.size(); ++i) v.density[i] = rgb[3 * i];
+        d.volumes.push_back(std::move(v));
+    }
+    return d;
 }
 
 }  // namespace obscura

@@ -10,6 +10,7 @@
 #include "map/level.h"
 #include "sim/sim_events.h"
 #include "sim/simulation.h"
+#include "smoke/smoke_dump.h"
 #include "smoke/smoke_manager.h"
 
 #include <cstdint>
@@ -37,6 +38,9 @@ public:
     std::uint64_t version() const { return version_; }
     // Seconds of game time the smoke has seen (the ray-march animates its noise with it).
     double seconds() const { return static_cast<double>(ticks_) * tickSeconds_; }
+    // The grids the renderer marches (the first SMOKE_MAX_VOLUMES, smoke_render.cpp), their
+    // densities as its textures hold them, its noise time and extinction: for tools/signref.
+    smoke::SmokeDump dump() const;
 
 private:
     const map::Level& level_;

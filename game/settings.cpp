@@ -165,7 +165,7 @@ struct Option {
 
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
-                                    "vsync", "headless", "ticks", "screenshot", "replay", "capture-dir", "record",
+                                    "vsync", "headless", "ticks", "screenshot", "volume-dump", "light-dump", "smoke-dump", "replay", "capture-dir", "record",
                                     "timedemo", "config", "data-dir", "log", "debug-max-render-targets",
                                     "debug-unsupported-formats", "smoke-resolution"};
 
@@ -306,6 +306,12 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                if (v.size() > kMaxPath) fail(where, "screenshot", q(v) + " is longer than " + std::to_string(kMaxPath) + " characters");
                s.screenshot = v;
            }});
+    I.add({"volume-dump", "write the last frame's volumetric light (half resolution, linear HDR) to this PFM file (tools/signref)",
+           path(&S::volumeDump, "volume-dump")});
+    I.add({"light-dump", "write the last frame's surface light before the volumes (linear HDR) to this PFM file (tools/signref)",
+           path(&S::lightDump, "light-dump")});
+    I.add({"smoke-dump", "write the smoke grids the last frame marched to this file (smoke/smoke_dump.h, tools/signref)",
+           path(&S::smokeDump, "smoke-dump")});
     I.add({"replay", "play this replay script headless (implies --headless)", path(&S::replay, "replay")});
     I.add({"capture-dir", "folder for a replay's `capture <name>` frames (<name>.png)", path(&S::captureDir, "capture-dir")});
     I.add({"record", "record this session's inputs as a replay script to this file", path(&S::record, "record")});
@@ -505,6 +511,9 @@ void checkOutputsWritable(const Settings& s) {
             fail(sourceOf(s, key), key, "cannot write " + q(path) + ": its folder " + q(parent.empty() ? "." : parent.string()) + " " + problem);
     };
     file("screenshot", s.screenshot);
+    file("volume-dump", s.volumeDump);
+    file("light-dump", s.lightDump);
+    file("smoke-dump", s.smokeDump);
     file("record", s.record);
     if (!s.replay.empty()) {
         const std::string problem = writableFolderProblem(s.captureDir, true);

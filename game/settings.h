@@ -80,6 +80,9 @@ struct Settings {
     bool headless = false;
     long ticks = 0;              // 0 = run until quit (windowed) / 300 (headless)
     std::string screenshot;      // PNG written from the last frame
+    // tools/signref's inputs, written from the last frame (core/pfm.h, smoke/smoke_dump.h): the
+    // volumetric pass's in-scattered light, the surfaces' light, the smoke grids it marched.
+    std::string volumeDump, lightDump, smokeDump;
     // Replays (engine_ext/replay): play a script, record one, or benchmark one
     std::string replay;          // script to play (implies headless)
     std::string captureDir = "."; // where `capture <name>` writes <name>.png

@@ -277,6 +277,13 @@ void Frame::publish() {
     }
 }
 
+Ogre::TexturePtr Frame::published(const std::string& unit, bool* standIn) const {
+    const auto it = published_.find(unit);
+    if (it == published_.end()) return {};
+    if (standIn) *standIn = it->second == noAo_ || it->second == noVolume_ || it->second == noDecals_;
+    return it->second;
+}
+
 void Frame::addSceneMaterial(const Ogre::MaterialPtr& material) {
     sceneMaterials_.push_back(material);
     if (!published_.empty()) bindSceneMaterial(*material);

@@ -65,6 +65,11 @@ public:
     // Rebuilds the chain when a technique's compositor or configuration changed. Call once a
     // frame before rendering (never from inside a render).
     void update(float time);
+    // A buffer as the passes read it (gbufferDepth, litMap, volumeMap, ...: publish()); null before
+    // the chain is built or when no pass of that name runs (a 1x1 stand-in is then bound instead:
+    // `standIn` true). flipY: the buffers are render textures stored upside down.
+    Ogre::TexturePtr published(const std::string& unit, bool* standIn = nullptr) const;
+    bool flipY() const { return context_.flipY; }
     // Why the technique's stage was turned off here for its current configuration; empty if not.
     std::string offReason(const Technique& technique) const;
 

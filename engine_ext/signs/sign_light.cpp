@@ -249,14 +249,33 @@ double penumbraRadius(const SignSpec& sign, const Vec3& p) {
     return sign.lightRadius * b / (a + b);
 }
 
+double penumbraAcrossEdge(double r, const Vec3& towardLamp, const SignSpec& sign, double gx, double gy) {
+    const double cosPsi = std::fabs(dot(towardLamp, sign.facing));
+    const double tx = dot(towardLamp, sign.right), ty = dot(towardLamp, sign.up), tilt = std::hypot(tx, ty);
+    const double g = std::hypot(gx, gy);
+    if (!(tilt > 1e-9) || !(g > 1e-12) || !(cosPsi > 1e-6)) return r;
+    const double c = (gx * tx + gy * ty) / (g * tilt);  // cosine between the edge's normal and the tilt
+    return r * std::sqrt(c * c / (cosPsi * cosPsi) + (1 - c * c));
+}
+
 double throughSign(const SignSpec& sign, const SignMask& mask, const std::vector<Hole>& holes, const Vec3& p) {
     double x = 0, y = 0;
     if (!planeCrossing(sign, p, x, y)) return 0;
-    const double d = std::min({openDistance(mask, holes, x, y), mask.halfWidth - std::fabs(x), mask.halfHeight - std::fabs(y)});
+    const auto open = [&](double u, double v) {
+        return std::min({openDistance(mask, holes, u, v), mask.halfWidth - std::fabs(u), mask.halfHeight - std::fabs(v)});
+    };
+    const double d = open(x, y);
+    const Vec3 towardLamp = normalize(sign.lamp - p);
     const double cone = kPi / 180 * sign.coneDegrees;
-    const double cosAngle = dot(normalize(p - sign.lamp), sign.facing);
-    const double inCone = smoothstep(std::cos(cone), std::cos(0.85 * cone), cosAngle);
-    return discEdgeFraction(d, std::max(penumbraRadius(sign, p), 1e-6)) * inCone;
+    const double inCone = smoothstep(std::cos(cone), std::cos(0.85 * cone), -dot(towardLamp, sign.facing));
+    const double r0 = std::max(penumbraRadius(sign, p), 1e-6);
+    // Beyond the widest the ellipse can be (r0 / cos psi) the point sees all of the lamp or none:
+    // the edge's normal is not needed (most of a beam; the shader skips the same two reads).
+    if (std::fabs(d) * std::fabs(dot(towardLamp, sign.facing)) >= r0) return (d > 0 ? 1.0 : 0.0) * inCone;
+    // The edge's normal in the plane: the field's gradient, one texel forward each way.
+    const double h = mask.texel;
+    const double gx = (open(x + h, y) - d) / h, gy = (open(x, y + h) - d) / h;
+    return discEdgeFraction(d, penumbraAcrossEdge(r0, towardLamp, sign, gx, gy)) * inCone;
 }
 
 Vec3 signIrradiance(const SignSpec& sign, const SignMask& mask, const std::vector<Hole>& holes, const Vec3& p) {

@@ -110,12 +110,22 @@ bool planeCrossing(const SignSpec& sign, const Vec3& p, double& x, double& y);
 // b = dot(p - centre, facing) and a = dot(centre - lamp, facing) (p in front: b > 0).
 double penumbraRadius(const SignSpec& sign, const Vec3& p);
 
+// The lamp's disc radius across an edge whose in-plane normal is (gx, gy) (plate axes), seen along
+// `towardLamp` (unit, p -> lamp): a sphere seen at psi off the plate's normal images in the plane as
+// an ellipse 1 / cos(psi) longer along the tilt (the in-plane part of towardLamp), so across an edge
+// whose normal makes angle e with the tilt its half-width is r sqrt(cos^2 e / cos^2 psi + sin^2 e);
+// the disc-segment fraction of that ellipse is the disc's at that radius (an affine map keeps areas'
+// ratios). r unchanged on the axis or where the edge's normal is undefined.
+double penumbraAcrossEdge(double r, const Vec3& towardLamp, const SignSpec& sign, double gx, double gy);
+
 // The share of the lamp that p sees through the sign, 0..1 (no other geometry: the game's shadow
 // map and the reference's rays add that):
 //   0 unless planeCrossing(p) gives (x, y);
-//   d = min(openDistance(x, y), halfWidth - |x|, halfHeight - |y|)   (the plate's edge is opaque)
+//   open(x, y) = min(openDistance(x, y), halfWidth - |x|, halfHeight - |y|)   (the plate's edge is opaque)
+//   d = open(x, y); its gradient (gx, gy) by forward differences one mask texel apart
 //   cone = smoothstep(cos(coneDegrees), cos(0.85 coneDegrees), dot(normalize(p - lamp), facing))
-//   throughSign = discEdgeFraction(d, max(penumbraRadius(p), 1e-6)) x cone
+//   throughSign = discEdgeFraction(d, penumbraAcrossEdge(max(penumbraRadius(p), 1e-6),
+//                                  normalize(lamp - p), gx, gy)) x cone
 double throughSign(const SignSpec& sign, const SignMask& mask, const std::vector<Hole>& holes, const Vec3& p);
 
 // The light the lamp sends to p through the sign, before occlusion by geometry: irradiance on a

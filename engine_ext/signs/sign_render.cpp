@@ -287,6 +287,7 @@ void SignRender::bindSigns(Ogre::Pass& pass, frame::Uniforms& u) const {
         plate[k * 4 + 0] = static_cast<float>(m.halfWidth);
         plate[k * 4 + 1] = static_cast<float>(m.halfHeight);
         plate[k * 4 + 2] = static_cast<float>(holes_[chosen_[k]].size());
+        plate[k * 4 + 3] = static_cast<float>(m.texel);
         put3(lamp + k * 4, s.lamp);
         lamp[k * 4 + 3] = static_cast<float>(s.lightRadius);
         put3(colour + k * 4, s.lightColour * s.intensity);

@@ -13,6 +13,7 @@
 #include "replay/replay_recorder.h"
 #include "replay/replay_script.h"
 #include "session.h"
+#include "smoke/smoke_dump.h"
 #include "ssao/ssao_modes.h"
 #include "stop_signal.h"
 
@@ -356,6 +357,9 @@ int GameApp::run() {
         const Vec3 eye = p.eye();
         std::printf("camera-pose %.4f %.4f %.4f %.4f %.4f\n", eye.x, eye.y, eye.z, p.yaw * 180.0 / kPi, p.pitch * 180.0 / kPi);
     }
+    if (!settings_.volumeDump.empty()) view_->writeBufferDump("volumeMap", settings_.volumeDump);
+    if (!settings_.lightDump.empty()) view_->writeBufferDump("litMap", settings_.lightDump);
+    if (!settings_.smokeDump.empty()) smoke::writeSmokeDump(session_->smoke().dump(), settings_.smokeDump);
     if (recorder_) writeRecording();
     std::cout << summaryLine() << "\n";
     if (xErrorCount() > 0) std::cerr << "obscura: " << xErrorCount() << " X error(s) in this run\n";

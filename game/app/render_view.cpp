@@ -12,7 +12,9 @@
 #include "render/prop_view.h"
 #include "session.h"
 #include "decals/decal_render.h"
+#include "core/pfm.h"
 #include "frame/frame.h"
+#include "frame/frame_shared.h"
 #include "signs/sign_render.h"
 #include "smoke/smoke_render.h"
 #include "ssao/ssao_compositor.h"
@@ -307,6 +309,34 @@ void RenderView::finishFrame() {
     Ogre::uint8 pixel[4];
     Ogre::PixelBox box(1, 1, 1, Ogre::PF_BYTE_RGBA, pixel);
     target().copyContentsToMemory(Ogre::Box(0, 0, 1, 1), box);
+}
+
+void RenderView::writeBufferDump(const std::string& unit, const std::string& path) {
+    bool standIn = false;
+    const Ogre::TexturePtr tex = frame_->published(unit, &standIn);
+    if (!tex) throw std::runtime_error(path + ": the frame has no buffer " + unit);
+    FloatImage out;
+    if (standIn) {  // nothing marched: no in-scattered light, at the size the pass would have had
+        out.width = std::max(1, static_cast<int>(viewport_->getActualWidth() * FRAME_VOLUME_SCALE));
+        out.height = std::max(1, static_cast<int>(viewport_->getActualHeight() * FRAME_VOLUME_SCALE));
+        out.rgb.assign(static_cast<std::size_t>(out.width) * out.height * 3, 0.f);
+    } else {
+        out.width = static_cast<int>(tex->getWidth());
+        out.height = static_cast<int>(tex->getHeight());
+        std::vector<float> rgba(static_cast<std::size_t>(out.width) * out.height * 4);
+        tex->getBuffer()->blitToMemory(Ogre::PixelBox(tex->getWidth(), tex->getHeight(), 1, Ogre::PF_FLOAT32_RGBA, rgba.data()));
+        out.rgb.resize(static_cast<std::size_t>(out.width) * out.height * 3);
+        for (int y = 0; y < out.height; ++y) {
+            // blitToMemory gives a render texture stored upside down (GL's, flipY) with the
+            // picture's top row first; one stored the right way up, bottom row first.
+            const int from = frame_->flipY() ? y : out.height - 1 - y;
+            for (int x = 0; x < out.width; ++x)
+                for (int c = 0; c < 3; ++c)
+                    out.rgb[(static_cast<std::size_t>(y) * out.width + x) * 3 + c] =
+                        rgba[(static_cast<std::size_t>(from) * out.width + x) * 4 + c];
+        }
+    }
+    writePfm(out, path);
 }
 
 void RenderView::writeScreenshot(const std::string& path) {

@@ -95,6 +95,10 @@ public:
     // Waits for the frame's rendering (timed frames include their own GPU work).
     void finishFrame();
     void writeScreenshot(const std::string& path);  // throws (load-time callers: --screenshot, captures)
+    // The last frame's HDR buffers as PFM (core/pfm.h) for tools/signref: `volumeMap` (the
+    // volumetric pass's in-scattered light, half resolution; zeros when nothing was marched) and
+    // `litMap` (the surfaces' light before the volumes, full resolution). Throws naming the file.
+    void writeBufferDump(const std::string& unit, const std::string& path);
     std::string saveScreenshot(const std::string& path) noexcept;  // in the frame (F12): the problem, or empty
 
     render::Hud& hud() { return *hud_; }

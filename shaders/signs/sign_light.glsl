@@ -11,7 +11,7 @@ uniform vec3 signCentre[SIGN_MAX_LIGHTS];       // the plate's centre, world
 uniform vec3 signRight[SIGN_MAX_LIGHTS];        // the plate's axes (orthonormal, world)
 uniform vec3 signUp[SIGN_MAX_LIGHTS];
 uniform vec3 signFacing[SIGN_MAX_LIGHTS];       // towards the room: the light travels along it
-uniform vec4 signPlate[SIGN_MAX_LIGHTS];        // half width, half height (m), holes in use, -
+uniform vec4 signPlate[SIGN_MAX_LIGHTS];        // half width, half height (m), holes in use, the mask's texel (m)
 uniform vec4 signLamp[SIGN_MAX_LIGHTS];         // the lamp's centre (world), w = its radius (m)
 uniform vec4 signColour[SIGN_MAX_LIGHTS];       // linear colour x intensity, w = range (m)
 uniform vec4 signCone[SIGN_MAX_LIGHTS];         // cos(cone), cos(0.85 cone)
@@ -49,7 +49,22 @@ float signDiscEdgeFraction(float d, float r)
     return 0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / kSignPi;
 }
 
-// sign_light.cpp's throughSign: the share of sign i's lamp p sees through the plate.
+// The open distance at plate point xy (sign_light.cpp's open()): the letters, the holes, the plate's
+// opaque edge.
+float signOpen(int i, vec2 xy)
+{
+    float d = signMaskAt(i, xy);
+    int holes = int(signPlate[i].z);
+    for (int h = 0; h < SIGN_MAX_HOLES; ++h) {
+        if (h >= holes) break;
+        vec4 hole = signHoles[i * SIGN_MAX_HOLES + h];
+        d = max(d, hole.z - length(xy - hole.xy));
+    }
+    return min(d, min(signPlate[i].x - abs(xy.x), signPlate[i].y - abs(xy.y)));
+}
+
+// sign_light.cpp's throughSign: the share of sign i's lamp p sees through the plate; the lamp's
+// disc widened across the edge by the tilt (penumbraAcrossEdge).
 float signThrough(int i, vec3 p)
 {
     vec3 lamp = signLamp[i].xyz;
@@ -58,16 +73,21 @@ float signThrough(int i, vec3 p)
     if (b <= 0.0 || a <= 0.0) return 0.0;
     vec3 q = p + (lamp - p) * (b / (a + b));
     vec2 xy = vec2(dot(q - signCentre[i], signRight[i]), dot(q - signCentre[i], signUp[i]));
-    float d = signMaskAt(i, xy);
-    int holes = int(signPlate[i].z);
-    for (int h = 0; h < SIGN_MAX_HOLES; ++h) {
-        if (h >= holes) break;
-        vec4 hole = signHoles[i * SIGN_MAX_HOLES + h];
-        d = max(d, hole.z - length(xy - hole.xy));
+    float d = signOpen(i, xy);
+    vec3 toLamp = normalize(lamp - p);
+    float cosPsi = abs(dot(toLamp, signFacing[i]));
+    float inCone = smoothstep(signCone[i].x, signCone[i].y, -dot(toLamp, signFacing[i]));
+    float r = max(signLamp[i].w * b / (a + b), 1e-6);
+    // Beyond the widest the ellipse can be, all of the lamp or none: no gradient needed.
+    if (abs(d) * cosPsi >= r) return (d > 0.0 ? 1.0 : 0.0) * inCone;
+    float texel = signPlate[i].w;
+    vec2 g = vec2(signOpen(i, xy + vec2(texel, 0.0)), signOpen(i, xy + vec2(0.0, texel))) - d;
+    vec2 tilt = vec2(dot(toLamp, signRight[i]), dot(toLamp, signUp[i]));
+    if (length(tilt) > 1e-6 && length(g) > 1e-9 && cosPsi > 1e-6) {
+        float c = dot(g, tilt) / (length(g) * length(tilt));
+        r *= sqrt(c * c / (cosPsi * cosPsi) + (1.0 - c * c));
     }
-    d = min(d, min(signPlate[i].x - abs(xy.x), signPlate[i].y - abs(xy.y)));
-    float inCone = smoothstep(signCone[i].x, signCone[i].y, dot(normalize(p - lamp), signFacing[i]));
-    return signDiscEdgeFraction(d, max(signLamp[i].w * b / (a + b), 1e-6)) * inCone;
+    return signDiscEdgeFraction(d, r) * inCone;
 }
 
 // sign_light.cpp's signIrradiance, times the shadow map: the irradiance sign i's lamp gives p on a

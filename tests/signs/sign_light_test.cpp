@@ -206,16 +206,23 @@ TEST(SignLight, ThePlatesEdgeIsOpaqueAndTheConeFades) {
     const double r = s.lightRadius * 1.0 / 2.5;
     for (double off : {-0.6, 0.0, 0.6}) {
         const Vec3 p = throughPlateAt(s, 0.0, m.halfHeight + off * r, 1.0);
-        EXPECT_NEAR(throughSign(s, m, open, p), discEdgeFraction(-off * r, r), 1e-9) << off;
+        // Seen within 10 degrees of the facing: the disc's law, widened by at most 1/cos(10) - 1.
+        EXPECT_NEAR(throughSign(s, m, open, p), discEdgeFraction(-off * r, r), 0.01) << off;
         EXPECT_NEAR(throughSign(s, m, open, p), bruteForceThrough(s, m, open, p), 0.02) << off;
     }
-    // The law is the lamp's disc seen straight on: seen at an angle theta off the facing, the
-    // disc's image in the plane is an ellipse 1 / cos(theta) longer across the edge, so the true
-    // penumbra is that much wider (at 45 degrees, 41 %). Near the axis it holds.
+    // Seen at an angle psi off the facing, the lamp's image in the plane is an ellipse 1 / cos(psi)
+    // longer along the tilt (penumbraAcrossEdge): at ~40 degrees the plain disc's law was off the
+    // brute force by more than 0.03 (the disc's fraction is kept to show it); the ellipse's holds.
     s.lamp = {0, 0, -0.3};
     const double r1 = s.lightRadius * 1.0 / 1.3;
-    const Vec3 oblique = throughPlateAt(s, 0.0, m.halfHeight + 0.6 * r1, 1.0);  // ~40 degrees off
-    EXPECT_GT(std::fabs(throughSign(s, m, open, oblique) - bruteForceThrough(s, m, open, oblique)), 0.03);
+    for (double off : {-0.6, 0.0, 0.6}) {
+        const Vec3 oblique = throughPlateAt(s, 0.0, m.halfHeight + off * r1, 1.0);  // ~40 degrees off
+        const double truth = bruteForceThrough(s, m, open, oblique);
+        EXPECT_NEAR(throughSign(s, m, open, oblique), truth, 0.02) << off;
+        if (off != 0.0) {
+            EXPECT_GT(std::fabs(discEdgeFraction(-off * r1, r1) - truth), 0.03) << off;
+        }
+    }
     s.lamp = {0, 0, -1.5};
 
     // The cone: full within 0.85 of its half angle, a smoothstep to nothing at it.

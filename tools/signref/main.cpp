@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> compare, holes, fontDirs;
     int width = 0, height = 0, threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     int edgePoints = 201, edgeSign = 0, lampSamples = -1;
-    double fov = 90, haze = 0.02, spread = -1, previewScale = 0;
+    double fov = 90, haze = 0.02, hazeExtinction = -1, spread = -1, previewScale = 0;
     signref::ShaftOptions opt;
     po::options_description desc("obscura_signref options");
     desc.add_options()("level", po::value(&levelPath), ".map level (its light_signs and triangles)")
@@ -161,7 +161,9 @@ int main(int argc, char** argv) {
         ("fov", po::value(&fov), "horizontal field of view, degrees (90)")
         ("width", po::value(&width), "image width (640, or the first --compare image's)")
         ("height", po::value(&height), "image height (360, or the first --compare image's)")
-        ("haze", po::value(&haze), "uniform haze extinction = scattering, per metre (0.02)")
+        ("haze", po::value(&haze), "uniform haze scattering, per metre (0.02)")
+        ("haze-extinction", po::value(&hazeExtinction), "the haze's extinction per metre (default: = --haze, a physical "
+                                                         "haze; 0: the game's thin-haze model, which neglects it)")
         ("smoke", po::value(&smokeFile), "a smoke dump (engine_ext/smoke/smoke_dump.h) for the medium")
         ("spp", po::value(&opt.spp), "view rays a pixel, stratified over its area (4)")
         ("step", po::value(&opt.step), "metres between points along a ray (0.02)")
@@ -254,6 +256,7 @@ int main(int argc, char** argv) {
         smoke::SmokeDump dump;
         signref::Medium medium;
         medium.haze = haze;
+        medium.hazeExtinction = hazeExtinction;
         if (!smokeFile.empty()) {
             dump = smoke::readSmokeDump(smokeFile);
             medium.smoke = &dump;

@@ -22,8 +22,11 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 VOLUME_DUMP_FLAG=${VOLUME_DUMP_FLAG:---volume-dump}
 SMOKE_DUMP_FLAG=${SMOKE_DUMP_FLAG:---smoke-dump}
-HAZE=${HAZE:-0.02}
-HAZE_ARGS=${HAZE_ARGS:-}                 # e.g. "--haze $HAZE" once the game has it
+HAZE=${HAZE:-0.03}                       # the game's default (engine_ext/signs/sign_knobs.h)
+HAZE_ARGS=${HAZE_ARGS:-"--sign-haze $HAZE"}
+# The game's haze only scatters (its extinction is neglected: shaders/signs/sign_march.glsl): the
+# reference integrates the same model. HAZE_EXTINCTION=$HAZE gives the physical haze instead.
+HAZE_EXTINCTION=${HAZE_EXTINCTION:-0}
 GAME_ARGS=${GAME_ARGS:-"--hud off"}      # anything else every game run gets
 game=${1:-build/game/obscura}
 ref=${SIGNREF:-build/tools/signref/obscura_signref}
@@ -34,15 +37,19 @@ mkdir -p "$OUT"
 export XDG_CACHE_HOME="$(pwd)/build/cache"
 for bin in "$game" "$ref"; do [ -x "$bin" ] || { echo "shaft_table: $bin is not built" >&2; exit 2; }; done
 
-arena=media/levels/arena.map room=tests/signref/levels/sign_room.map
+arena=media/levels/arena.map room=tests/signs/levels/sign_room.map
 # name | level | eye "x y z yaw pitch" (world metres, degrees; yaw 0 faces -z, 90 faces -x) |
 # optional replay (instead of --start-pose: e.g. one that throws a smoke grenade into the beam; the
 # dump is taken at its screenshot tick). Arena poses: engine_ext/signs/README.md (room C's EXIT).
 views=(
-  "arena_at_sign|$arena|32 1.65 -52 104 -5"       # room C: the EXIT sign from across the room
-  "arena_along|$arena|24 1.65 -48 -90 -8"         # room C: along the light, the shafts from the side
-  "room_front|$room|5 1.2 -3.5 0 25"              # tests/signref's room: the sign from 4 m, below
-  "room_side|$room|8.5 1.6 -5 70 8"               # the same from the side, across the shafts
+  # tests/signs/levels/sign_room.map: the replays' views (tests/replay/scripts/sign_*.replay)
+  "front|$room|9 1.65 -4 90 8"                    # facing the sign across the room
+  "side|$room|6 1.65 -7.5 180 5"                  # from the south wall, across the beam
+  "inside|$room|6 1.65 -4.3 0 0"                  # in the beam, looking across it (sign off-screen)
+  "behind|$room|-1.5 1.65 -4 -90 5"               # behind the sign, through the doorway
+  "lamp_behind|$room|3 1.65 -4 -90 -10"           # the lamp behind the camera, along the light
+  "smoke|$room||tests/signs/shaft_smoke.replay"   # a grenade's cloud in the beam, from the side
+  "arena_at_sign|$arena|32 1.65 -52 104 -5"       # the arena's room C: its EXIT sign across the room
 )
 picked() { [ -z "$2" ] || [[ " ${2//,/ } " == *" $1 "* ]]; }
 
@@ -66,12 +73,12 @@ for v in "${views[@]}"; do
   [ -n "$used" ] || used=$pose
   smoke_args=()
   [ -s "$smoke" ] && smoke_args=(--smoke "$smoke")
-  line=$("$ref" --level "$level" --pose "$used" --fov "$FOV" --haze "$HAZE" "${smoke_args[@]}" --spp "$SPP" --step "$STEP" \
+  line=$("$ref" --level "$level" --pose "$used" --fov "$FOV" --haze "$HAZE" --haze-extinction "$HAZE_EXTINCTION" "${smoke_args[@]}" --spp "$SPP" --step "$STEP" \
            --lamp-samples "$LAMP" --threads "$THREADS" --out "$OUT/${name}_ref.pfm" --png "$OUT/${name}_ref.png" \
            --compare "$vol" 2> "$OUT/${name}_ref.log" | grep '^signref ')
   # the game's law (signIrradiance, one occlusion ray) by the same integrator against the truth:
   # the error a perfect estimator of the law would still have
-  law=$("$ref" --level "$level" --pose "$used" --fov "$FOV" --haze "$HAZE" "${smoke_args[@]}" --spp "$SPP" --step "$STEP" \
+  law=$("$ref" --level "$level" --pose "$used" --fov "$FOV" --haze "$HAZE" --haze-extinction "$HAZE_EXTINCTION" "${smoke_args[@]}" --spp "$SPP" --step "$STEP" \
           --law --threads "$THREADS" --compare "$OUT/${name}_ref.pfm" 2>> "$OUT/${name}_ref.log" | sed -n 's/^signref rmse=\([^ ]*\).*/\1/p')
   rmse=$(sed -n 's/.* rmse=\([^ ]*\).*/\1/p' <<< "$line")
   off=$(sed -n 's/.* rmse_off=\([^ ]*\).*/\1/p' <<< "$line")

@@ -38,7 +38,7 @@ double smokeDetail(const Vec3& p, double time) {
 }
 
 void Medium::at(const Vec3& p, double& sigmaT, Vec3& sigmaS) const {
-    sigmaT = haze;
+    sigmaT = hazeExtinction < 0 ? haze : hazeExtinction;
     sigmaS = {haze, haze, haze};
     if (!smoke) return;
     double detail = -1;  // computed once, for the first volume with smoke at p

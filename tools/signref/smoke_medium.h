@@ -20,8 +20,10 @@ Vec3 noiseTurn(const Vec3& v);  // kNoiseTurn * v (GLSL's column-major mat3)
 double smokeDetail(const Vec3& p, double time);
 
 struct Medium {
-    double haze = 0;                        // extinction = scattering per metre (albedo 1)
+    double haze = 0;                        // scattering per metre (albedo 1)
     const smoke::SmokeDump* smoke = nullptr;  // optional, not owned
+    double hazeExtinction = -1;  // the haze's extinction per metre; < 0: `haze` (a physical haze);
+                                 // 0: the game's thin-haze model (shaders/signs/sign_march.glsl)
 
     // Extinction (per metre) and the rgb scattering coefficient at p.
     void at(const Vec3& p, double& sigmaT, Vec3& sigmaS) const;
