@@ -132,7 +132,7 @@ Vec3 ShaftReference::alongRay(const Vec3& eye, const Vec3& dir, double tmax, con
         double sigmaT;
         Vec3 sigmaS;
         medium_.at(p, sigmaT, sigmaS);
-        if (!(sigmaT > 0)) continue;
+        if (!(sigmaT > 0) && sigmaS.x == 0 && sigmaS.y == 0 && sigmaS.z == 0) continue;
         const double stepT = std::exp(-sigmaT * dt);
         Vec3 source;
         for (const SignLight& sign : signs_) {
@@ -151,7 +151,9 @@ Vec3 ShaftReference::alongRay(const Vec3& eye, const Vec3& dir, double tmax, con
             if (share == 0) continue;
             source += e0 * (share * phaseHG(dot(dir, normalize(p - sign.spec.lamp)), kShaftG));
         }
-        const double w = T * (1 - stepT) / sigmaT;
+        // (1 - e^(-sigma_t dt)) / sigma_t, which is dt in a medium that only scatters (the game's
+        // thin haze: --haze-extinction 0).
+        const double w = T * (sigmaT * dt > 1e-12 ? (1 - stepT) / sigmaT : dt);
         L += Vec3{sigmaS.x * source.x, sigmaS.y * source.y, sigmaS.z * source.z} * w;
         T *= stepT;
         if (T < 1e-9) break;
