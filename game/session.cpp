@@ -58,7 +58,17 @@ map::Level Session::loadLevel(const Settings& settings, std::vector<std::string>
     map::CompileOptions options;
     options.unitsPerMetre = settings.mapScale;
     const auto t0 = std::chrono::steady_clock::now();
-    const map::MapFile file = map::loadMapFile(settings.level);
+    map::MapFile file = map::loadMapFile(settings.level);
+    // Obscura's own entities for the level, `<name>.ent` beside it or in media/levels/ (a real
+    // Quake map, which nobody here may edit, gets its signs there: media/levels/e3m4.ent).
+    const std::filesystem::path levelPath(settings.level);
+    for (const auto& dir : {levelPath.parent_path(), std::filesystem::path(settings.dataDir) / "media/levels"}) {
+        const std::filesystem::path overlay = dir / (levelPath.stem().string() + ".ent");
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(overlay, ec)) continue;
+        map::addEntityOverlay(file, overlay.string());
+        break;
+    }
     const auto t1 = std::chrono::steady_clock::now();
     map::Level level = map::compileLevel(file, options, warnings);
     if (times) {

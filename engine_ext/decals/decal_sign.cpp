@@ -105,7 +105,7 @@ std::vector<SignSpec> readSigns(const map::Level& level, const std::vector<std::
     std::vector<SignSpec> out;
     for (const auto& e : level.entities) {
         if (e.classname != "decal_sign") continue;
-        const std::string where = (level.sourcePath.empty() ? std::string("<level>") : level.sourcePath) + ":" + std::to_string(e.pos.line);
+        const std::string where = e.where(level.sourcePath);
         try {
             SignSpec s = readSign(level, e, searchDirs);
             s.where = where;

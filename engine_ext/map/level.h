@@ -78,7 +78,12 @@ struct LevelEntity {
     Vec3 origin;      // converted to metres / Y-up
     double yaw = 0;   // radians, see the header comment
     SourcePos pos;
+    std::string file;  // where it was read when not the level's .map (an entity overlay), else ""
     bool isBrushEntity = false;
+    // "file:line" of the entity for messages: its own file, or the level's.
+    std::string where(const std::string& levelPath) const {
+        return (file.empty() ? (levelPath.empty() ? std::string("<level>") : levelPath) : file) + ":" + std::to_string(pos.line);
+    }
 
     // Value of a key, or `fallback` if absent.
     const std::string& value(const std::string& key, const std::string& fallback = empty()) const {

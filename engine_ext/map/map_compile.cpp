@@ -163,6 +163,7 @@ public:
         LevelEntity e;
         e.keys = me.keys;
         e.pos = me.pos;
+        e.file = me.file;
         e.classname = me.value("classname");
         e.isBrushEntity = !me.brushes.empty();
         Vec3 quakeOrigin;
@@ -361,6 +362,18 @@ Level compileLevel(const MapFile& map, const CompileOptions& options, std::vecto
 
 Level loadLevel(const std::string& path, const CompileOptions& options, std::vector<std::string>* warnings) {
     return compileLevel(loadMapFile(path), options, warnings);
+}
+
+void addEntityOverlay(MapFile& map, const std::string& overlayPath) {
+    MapFile overlay = loadMapFile(overlayPath);
+    for (MapEntity& e : overlay.entities) {
+        const std::string where = overlayPath + ":" + std::to_string(e.pos.line);
+        if (e.value("classname") == "worldspawn") throw MapError(where + ": an entity overlay cannot hold a worldspawn");
+        if (!e.brushes.empty()) throw MapError(where + ": an entity overlay holds point entities only, this one has brushes");
+        e.file = overlayPath;
+        map.entities.push_back(std::move(e));
+    }
+    for (auto& w : overlay.warnings) map.warnings.push_back(std::move(w));
 }
 
 }  // namespace obscura::map

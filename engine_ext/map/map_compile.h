@@ -39,6 +39,12 @@ Aabb placementRegion(const Level& level);
 bool inside(const Aabb& box, const Vec3& p);
 
 Level compileLevel(const MapFile& map, const CompileOptions& options = {}, std::vector<std::string>* warnings = nullptr);
+
+// Obscura's own entities for a level nobody here may edit (a real Quake map): the point entities
+// of `overlayPath` (.map syntax, entity blocks only, e.g. `e3m4.ent` beside the game's levels)
+// appended to `map`'s, each remembering its file for messages. Throws MapError naming the overlay's
+// file and line for a malformed file, a worldspawn or an entity with brushes.
+void addEntityOverlay(MapFile& map, const std::string& overlayPath);
 Level loadLevel(const std::string& path, const CompileOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 
 // Texture classes (case-insensitive), exposed for tests and other systems.

@@ -60,6 +60,7 @@ struct MapEntity {
     std::vector<std::pair<std::string, std::string>> keys;
     std::vector<MapBrush> brushes;
     SourcePos pos;
+    std::string file;  // the file it was read from when not the map's own (an overlay: addEntityOverlay)
     const std::string& value(const std::string& key) const;  // "" when absent
     bool has(const std::string& key) const;
 };

@@ -143,7 +143,7 @@ std::vector<SignSpec> readSignLights(const map::Level& level, const std::vector<
     std::vector<SignSpec> out;
     for (const map::LevelEntity& e : level.entities) {
         if (e.classname != "light_sign") continue;
-        const std::string where = (level.sourcePath.empty() ? std::string("<level>") : level.sourcePath) + ":" + std::to_string(e.pos.line);
+        const std::string where = e.where(level.sourcePath);
         std::vector<std::string> clamped;
         try {
             SignSpec s = readSign(level, e, fontDirs, clamped);
