@@ -174,6 +174,17 @@ Vec3 ShaftReference::pixel(const CameraPose& pose, int width, int height, int x,
         double t;
         Vec3 n;
         if (scene_.intersect(pose.eye, dir, 0, opt.far, t, n)) tmax = t;
+        // The plates hide what lies behind them from the eye, as the game draws them (the lamp's
+        // rays ignore them: the mask is their plate).
+        for (const SignLight& sign : signs_) {
+            const double dn = dot(dir, sign.spec.facing);
+            if (std::fabs(dn) < 1e-12) continue;
+            const double tp = dot(sign.spec.centre - pose.eye, sign.spec.facing) / dn;
+            if (!(tp > 0 && tp < tmax)) continue;
+            const Vec3 q = pose.eye + dir * tp - sign.spec.centre;
+            if (std::fabs(dot(q, sign.spec.right)) <= sign.mask.halfWidth && std::fabs(dot(q, sign.spec.up)) <= sign.mask.halfHeight)
+                tmax = tp;
+        }
         sum += alongRay(pose.eye, dir, tmax, opt, rng);
     }
     return sum / spp;
