@@ -5,6 +5,8 @@
 // atlas's bound skips what does not fit with a message.
 #include <gtest/gtest.h>
 
+#include "entity_lines.h"
+
 #include "decals/decal_sign.h"
 #include "map/map_compile.h"
 
@@ -21,16 +23,7 @@ const fs::path kLevels = fs::path(OBSCURA_SOURCE_DIR) / "tests/decals/levels";
 const std::string kMap = (kLevels / "bad_signs.map").string();
 
 // The line of the entity after each "// <why>" comment.
-std::map<std::string, int> entityLines() {
-    std::map<std::string, int> out;
-    std::ifstream in(kMap);
-    std::string line, pending;
-    for (int n = 1; std::getline(in, line); ++n) {
-        if (line.rfind("// ", 0) == 0) pending = line.substr(3);
-        else if (line == "{" && !pending.empty()) out[pending] = n, pending.clear();
-    }
-    return out;
-}
+std::map<std::string, int> entityLines() { return test::entityLinesAfterComments(kMap); }
 
 struct Loaded {
     std::vector<SignSpec> specs;

@@ -6,6 +6,8 @@
 // from tests/signs/levels/bad_signs.map (one good sign per feature, one bad sign per reason).
 #include <gtest/gtest.h>
 
+#include "entity_lines.h"
+
 #include "decals/glyph.h"
 #include "map/map_compile.h"
 #include "signs/sign_light.h"
@@ -467,16 +469,7 @@ TEST(SignLight, MaxPenumbraRadiusIsTheLargestWithinTheRange) {
 
 namespace {
 // The line of the entity after each "// <why>" comment.
-std::map<std::string, int> entityLines() {
-    std::map<std::string, int> out;
-    std::ifstream in(kMap);
-    std::string line, pending;
-    for (int n = 1; std::getline(in, line); ++n) {
-        if (line.rfind("// ", 0) == 0) pending = line.substr(3);
-        else if (line == "{" && !pending.empty()) out[pending] = n, pending.clear();
-    }
-    return out;
-}
+std::map<std::string, int> entityLines() { return test::entityLinesAfterComments(kMap); }
 struct Read {
     std::vector<SignSpec> signs;
     std::vector<std::string> warnings;
