@@ -278,8 +278,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
            integer(&S::ssaoSamples, ssao::kSamples.name, ssao::kSamples.min, ssao::kSamples.max)});
     I.add({"view", "what the frame shows at the start: scene, ao, albedo, normal, depth, direct-light, hdr-light (V cycles)",
            str(&S::view)});
-    I.add({"sign-mode", "back-lit signs' light: off, shafts (engine_ext/signs)", [](S& s, W v, W where) {
-               if (v != "off" && v != "shafts") fail(where, "sign-mode", q(v) + ", expected off or shafts");
+    I.add({"sign-mode", "back-lit signs' light: off, shafts, meshuggah (the seed's rays, for comparison; engine_ext/signs)", [](S& s, W v, W where) {
+               if (v != "off" && v != "shafts" && v != "meshuggah") fail(where, "sign-mode", q(v) + ", expected off, shafts or meshuggah");
                s.signMode = std::string(v);
            }});
     I.add({signs::kHaze.name, "haze that shows the signs' shafts, per metre " + rangeText(signs::kHaze), knob(&S::signHaze, signs::kHaze)});

@@ -71,7 +71,7 @@ struct Settings {
     std::vector<std::string> debugUnsupportedFormats;  // debug: render-target formats pretended missing
     double exposure = frame::kExposure.value;  // engine_ext/frame/frame_knobs.h
     // The back-lit signs (engine_ext/signs): how their light is drawn (off, shafts: the shafts and
-    // the lettered light on surfaces) and the haze that shows the shafts.
+    // the lettered light on surfaces; meshuggah: the seed's rays instead of the shafts) and the haze that shows the shafts.
     std::string signMode = "shafts";
     double signHaze = signs::kHaze.value;
     std::string view = "scene";  // what the frame shows at the start (V cycles): scene, ao, albedo, ...

@@ -1,6 +1,7 @@
 // See sign_render.h.
 #include "signs/sign_render.h"
 
+#include "signs/meshuggah.h"
 #include "signs/signs_shared.h"
 
 #include <Ogre.h>
@@ -40,7 +41,9 @@ Ogre::TexturePtr floatTexture(const std::string& name, int width, int height, co
 }
 }  // namespace
 
-const char* signModeName(SignMode m) { return m == SignMode::Off ? "off" : "shafts"; }
+const char* signModeName(SignMode m) {
+    return m == SignMode::Off ? "off" : m == SignMode::Meshuggah ? "meshuggah" : "shafts";
+}
 
 class SignRender::Shafts : public frame::Technique {
 public:
@@ -95,6 +98,7 @@ SignRender::SignRender(Ogre::SceneManager& scene, std::vector<SignSpec> specs, s
         maskTextures_.push_back(floatTexture("Obscura/Signs/Mask" + std::to_string(i), m.width, m.height, m.distance.data()));
         buildPlate(i);
     }
+    meshuggah_ = std::make_unique<Meshuggah>(scene_, specs_, masks_);
     if (specs_.empty()) return;
     caster_ = Ogre::MaterialManager::getSingleton().getByName("Obscura/Signs/ShadowCaster");
     if (!caster_) throw std::runtime_error("material Obscura/Signs/ShadowCaster (media/signs/signs.material) is missing");
@@ -159,8 +163,10 @@ void SignRender::drawShadow(std::size_t slot) {
 
 frame::Technique& SignRender::shafts() { return *shafts_; }
 frame::Technique& SignRender::surfaces() { return *surfaces_; }
+const std::vector<Ogre::MaterialPtr>& SignRender::meshuggahMaterials() const { return meshuggah_->materials(); }
 
 SignRender::~SignRender() {
+    meshuggah_.reset();
     auto& tm = Ogre::TextureManager::getSingleton();
     auto& mm = Ogre::MaterialManager::getSingleton();
     if (caster_) mm.removeListener(this, kShadowScheme);
@@ -247,6 +253,7 @@ void SignRender::update(const std::vector<SignHoles>& holes, std::uint64_t versi
         for (std::size_t i = 0; i < specs_.size() && i < holes.size(); ++i) {
             holes_[i] = holes[i].holes();
             updatePlate(i);
+            meshuggah_->setHoles(i, holes_[i]);
         }
     }
     // The nearest signs whose beam could reach the camera's surroundings: by distance to the lamp,
@@ -262,6 +269,10 @@ void SignRender::update(const std::vector<SignHoles>& holes, std::uint64_t versi
     std::sort(chosen_.begin(), chosen_.end());  // a stable slot per sign while the set stays
     if (mode_ != SignMode::Off)
         for (std::size_t k = 0; k < chosen_.size(); ++k) drawShadow(k);
+    std::vector<Ogre::TexturePtr> maps;
+    std::vector<Ogre::Matrix4> matrices;
+    for (std::size_t k = 0; k < chosen_.size(); ++k) maps.push_back(shadows_[k].texture), matrices.push_back(shadows_[k].worldToClip);
+    meshuggah_->update(mode_ == SignMode::Meshuggah, chosen_, maps, matrices, haze_);
 }
 
 void SignRender::bindSigns(Ogre::Pass& pass, frame::Uniforms& u) const {

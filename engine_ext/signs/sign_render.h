@@ -28,9 +28,12 @@ class ManualObject;
 
 namespace obscura::signs {
 
-// How the signs' light is drawn (`--sign-mode`, the F1 panel).
-enum class SignMode { Off, Shafts };
+// How the signs' light is drawn (`--sign-mode`, the F1 panel). Meshuggah: the seed's rays
+// (meshuggah.h) instead of the shafts, the lettered light on surfaces kept, for comparison.
+enum class SignMode { Off, Shafts, Meshuggah };
 const char* signModeName(SignMode m);
+
+class Meshuggah;
 
 // The plates' visibility flag: kept out of their own lamps' shadow maps.
 constexpr unsigned kPlateVisibilityFlag = 1u << 28;
@@ -58,6 +61,8 @@ public:
     Ogre::Technique* handleSchemeNotFound(unsigned short, const Ogre::String& schemeName, Ogre::Material*, unsigned short,
                                           const Ogre::Renderable*) override;
     frame::Technique& surfaces();
+    // The Meshuggah mode's ray materials, for Frame::addSceneMaterial (they read gbufferDepth).
+    const std::vector<Ogre::MaterialPtr>& meshuggahMaterials() const;
 
 private:
     class Shafts;
@@ -94,6 +99,7 @@ private:
     float haze_;
     std::unique_ptr<Shafts> shafts_;
     std::unique_ptr<Surfaces> surfaces_;
+    std::unique_ptr<Meshuggah> meshuggah_;  // SignMode::Meshuggah's rays (meshuggah.h)
 };
 
 }  // namespace obscura::signs

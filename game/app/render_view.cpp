@@ -118,6 +118,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
                                                  static_cast<float>(settings.signHaze),
                                                  render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
     setSigns(settings.signMode, settings.signHaze);
+    for (const auto& m : signs_->meshuggahMaterials()) frame_->addSceneMaterial(m);  // they read gbufferDepth
     frame_->add(signs_->surfaces());
     frame_->add(signs_->shafts());
     // The heightfield mode's height map, over the level's brushes (models stand inside them), with
@@ -173,7 +174,9 @@ Ogre::RenderTarget& RenderView::target() {
 }
 
 void RenderView::setSigns(const std::string& mode, double haze) {
-    signs_->setMode(mode == "off" ? signs::SignMode::Off : signs::SignMode::Shafts);
+    signs_->setMode(mode == "off"         ? signs::SignMode::Off
+                    : mode == "meshuggah" ? signs::SignMode::Meshuggah
+                                          : signs::SignMode::Shafts);
     signs_->setHaze(static_cast<float>(haze));
 }
 

@@ -81,7 +81,7 @@ public:
 
     // Camera: horizontal field of view (degrees); a resized window's new aspect.
     void setFov(double horizontalDegrees);
-    // The back-lit signs: "off" or "shafts", and the haze per metre (settings.signMode, signHaze).
+    // The back-lit signs: "off", "shafts" or "meshuggah", and the haze per metre (settings.signMode, signHaze).
     void setSigns(const std::string& mode, double haze);
     void resized(int width, int height, double horizontalFov);
 

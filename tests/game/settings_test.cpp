@@ -301,3 +301,13 @@ TEST(SettingsBoundary, RecordingsCarryTheInputSettingsAndReplaysApplyThemFirst) 
     ASSERT_EQ(t0.inputs.size(), 1u);
     EXPECT_TRUE(player.take(1).settings.empty());  // once, before the first tick
 }
+
+TEST(Settings, SignModeIsValidated) {
+    Settings s;
+    EXPECT_EQ(s.signMode, "shafts");
+    for (const char* mode : {"off", "shafts", "meshuggah"}) {
+        ASSERT_TRUE(parseArgs({"--sign-mode", mode}, s));
+        EXPECT_EQ(s.signMode, mode);
+    }
+    EXPECT_EQ(errorOf({"--sign-mode", "rays"}), "command line: setting 'sign-mode': 'rays', expected off, shafts or meshuggah");
+}
