@@ -104,8 +104,11 @@ TEST(ReplayBench, AlteredReferenceFailsWithAnHtmlReport) {
     obscura::writePng(im, (refs / "corridor.png").string());
 
     const std::string out = temp("altered_out");
+    // The tolerances replay_arena_walk runs with (tests/replay/CMakeLists.txt): the untouched
+    // captures must pass as they do there (a fresh machine drew two crosshair pixels otherwise than
+    // the one that made the references, stop 20's build too), the painted block (3,200 pixels) fail.
     const Result r = sh("'" OBSCURA_REPLAYTEST "' --game '" + kGame + "' --replay '" + kScripts + "/arena_walk.replay' --references " +
-                        refs.string() + " --out " + out);
+                        refs.string() + " --out " + out + " --min-ssim 0.98 --min-psnr 30 --max-pixels-over 400");
     EXPECT_EQ(r.code, 1) << r.out;
     EXPECT_NE(r.out.find("corridor: "), std::string::npos);
     const auto at = r.out.find("report: ");
