@@ -608,9 +608,11 @@ TEST(SignLight, TheArenasDarkRoomHasItsSignAndNoLamp) {
     EXPECT_TRUE(warnings.empty());
     const SignSpec& s = signs[0];
     EXPECT_EQ(s.text, "EXIT");
-    expectVec(s.centre, {22.9375, 2.75, -49.75}, "plate centre");
-    expectVec(s.facing, {1, 0, 0}, "facing east along the room");
-    expectVec(s.lamp, {22.6375, 2.75, -49.75}, "lamp");
+    expectVec(s.centre, {24.09375, 2.75, -49.75}, "plate centre");
+    const double down = 10 * kPi / 180;  // mangle "10 0 0": pitched 10 degrees down
+    expectVec(s.facing, {std::cos(down), -std::sin(down), 0}, "facing east along the room, 10 degrees down");
+    expectVec(s.lamp, s.centre - s.facing * 1.2, "lamp 1.2 m behind");
+    EXPECT_GT(s.lamp.x, 22.5 + 0.3);  // between the plate and the west wall
     const SignMask m = bakeMask(s, maxPenumbraRadius(s));
     EXPECT_LT(m.halfWidth, 0.75);  // the plate fits over the 1.5 m doorway
     EXPECT_LT(s.centre.y - m.halfHeight, 2.75);

@@ -200,11 +200,11 @@ entity("decal_sign", origin=point(2, 40.5, 1.625), angle="0", text="EXIT", size=
 # gets into it either: point lights cast no shadows here, so it lies over 13 m from room B's, whose
 # reach is 6.9 and 10 m; tests/signs checks it). Reached from room B through a doorway in room B's
 # east wall under the mezzanine (y 49-50.5) and a 5.5 m corridor (x 16.5-22, 3 m high). Its only
-# light is the back-lit `light_sign` "EXIT" over the doorway in its west wall, facing east along the
-# room: the plate's centre at (22.9375, 49.75, 2.75) (0.44 m in front of the west wall; the plate's
-# bottom edge ~0.25 m over the doorway's 2.25 m top), the lamp 0.3 m behind it at
-# (22.6375, 49.75, 2.75), 11.9 m from the far (east) wall (range 16 so the light reaches it). In the
-# game's world (x, z, -y): plate (22.9375, 2.75, -49.75), lamp (22.6375, 2.75, -49.75). Camera
+# light is the back-lit `light_sign` "EXIT" before the doorway in its west wall, facing east along
+# the room and 10 degrees down: the plate's centre at (24.09375, 49.75, 2.75) (1.6 m in front of the west
+# wall, its bottom edge over the doorway's 2.25 m top), the lamp 1.2 m behind it, 0.4 m from the wall
+# (range 16 so the light reaches the far wall). In the game's world (x, z, -y): plate
+# (24.09375, 2.75, -49.75), lamp (22.912, 2.958, -49.75). Camera
 # poses (--start-pose / a replay's `start`, "x y z yaw pitch"): looking back at the sign across the
 # room "32 1.65 -52 104 -5"; from beside the doorway along the light to the far wall "24 1.65 -48 -90 -8".
 SIGN_ROOM = dict(x0=22.5, y0=45.5, x1=34.5, y1=55.5, height=4)
@@ -214,8 +214,12 @@ add(box(16.5, SIGN_DOOR_Y + DOOR_W, 0, 22, SIGN_DOOR_Y + DOOR_W + 0.5, 3, "concr
 add(box(16.5, SIGN_DOOR_Y - 0.5, 3, 22, SIGN_DOOR_Y + DOOR_W + 0.5, 3.5, "concrete"))  # its ceiling
 room(SIGN_ROOM["x0"], SIGN_ROOM["y0"], SIGN_ROOM["x1"], SIGN_ROOM["y1"], SIGN_ROOM["height"], "concrete", "concrete",
      "concrete", doors={"w": [(SIGN_DOOR_Y, DOOR_W, DOOR_H)]})
-entity("light_sign", origin=point(SIGN_ROOM["x0"] + 0.4375, SIGN_DOOR_Y + DOOR_W / 2, 2.75), angle="0", text="EXIT",
-       size="0.4", margin="0.1", light_distance="0.3", range="16")
+# Hung 1.6 m in front of the doorway and tilted 10 degrees down, its lamp 1.2 m behind it (0.4 m
+# from the wall): the letters' light on the far wall is (1.2 + 10.4) / 1.2 = 9.7 times their
+# 0.25 m, 2.4 m tall, readable; intensity 40 so it shows over the arena's sky ambient, which
+# reaches indoor rooms too (no per-room ambient yet).
+entity("light_sign", origin=point(SIGN_ROOM["x0"] + 1.59375, SIGN_DOOR_Y + DOOR_W / 2, 2.75), mangle="10 0 0", text="EXIT",
+       size="0.25", margin="0.08", light_distance="1.2", light="40", light_radius="0.015", range="16")
 
 # --- Firing range: 42 x 6 m, 5 m high, reached from the courtyard through a corridor.
 room(10, 3, 52, 9, 5, "concrete", "concrete", "concrete", doors={"n": [(30.5, DOOR_W, DOOR_H)]})

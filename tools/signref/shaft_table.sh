@@ -72,7 +72,7 @@ for v in "${views[@]}"; do
   used=$(sed -n 's/^camera-pose //p' "$OUT/${name}_game.log" | tail -n 1)
   [ -n "$used" ] || used=$pose
   smoke_args=()
-  [ -s "$smoke" ] && smoke_args=(--smoke "$smoke")
+  grep -qa "^volumes [1-9]" "$smoke" 2>/dev/null && smoke_args=(--smoke "$smoke")
   line=$("$ref" --level "$level" --pose "$used" --fov "$FOV" --haze "$HAZE" --haze-extinction "$HAZE_EXTINCTION" "${smoke_args[@]}" --spp "$SPP" --step "$STEP" \
            --lamp-samples "$LAMP" --threads "$THREADS" --out "$OUT/${name}_ref.pfm" --png "$OUT/${name}_ref.png" \
            --compare "$vol" 2> "$OUT/${name}_ref.log" | grep '^signref ')
@@ -84,7 +84,7 @@ for v in "${views[@]}"; do
   off=$(sed -n 's/.* rmse_off=\([^ ]*\).*/\1/p' <<< "$line")
   mean=$(sed -n 's/.* mean_ref=\([^ ]*\).*/\1/p' <<< "$line")
   ratio=$(awk -v a="$rmse" -v b="$off" 'BEGIN { if (b > 0) printf "%.3f", a / b; else print "n/a" }')
-  smoke_note=no; [ -s "$smoke" ] && smoke_note=yes
+  smoke_note=no; [ ${#smoke_args[@]} -gt 0 ] && smoke_note=yes
   rows+=("| $name | \`$used\` | $smoke_note | $rmse | $off | $ratio | $law | $mean |")
   echo "$line view=$name" >> "$OUT/results.txt"
 done
