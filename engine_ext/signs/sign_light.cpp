@@ -157,14 +157,24 @@ std::vector<SignSpec> readSignLights(const map::Level& level, const std::vector<
     return out;
 }
 
-double SignMask::at(double x, double y) const {
-    if (width <= 0 || height <= 0) return -std::numeric_limits<double>::infinity();  // no mask: no letter anywhere
-    const double u = std::clamp((x + halfWidth) / texel - 0.5, 0.0, width - 1.0);
-    const double v = std::clamp((halfHeight - y) / texel - 0.5, 0.0, height - 1.0);
+double SignMask::at(double x, double y, double* gx, double* gy) const {
+    if (width <= 0 || height <= 0) {  // no mask: no letter anywhere
+        if (gx) *gx = 0, *gy = 0;
+        return -std::numeric_limits<double>::infinity();
+    }
+    const double uRaw = (x + halfWidth) / texel - 0.5, vRaw = (halfHeight - y) / texel - 0.5;
+    const double u = std::clamp(uRaw, 0.0, width - 1.0);
+    const double v = std::clamp(vRaw, 0.0, height - 1.0);
     const int i0 = std::min(static_cast<int>(u), width - 1), j0 = std::min(static_cast<int>(v), height - 1);
     const int i1 = std::min(i0 + 1, width - 1), j1 = std::min(j0 + 1, height - 1);
     const double fu = u - i0, fv = v - j0;
     auto d = [&](int i, int j) { return static_cast<double>(distance[static_cast<std::size_t>(j) * width + i]); };
+    if (gx) {
+        // The bilinear patch's own slope (per metre; v grows downwards, y upwards); 0 across a
+        // clamped border.
+        *gx = uRaw == u ? ((d(i1, j0) - d(i0, j0)) * (1 - fv) + (d(i1, j1) - d(i0, j1)) * fv) / texel : 0.0;
+        *gy = vRaw == v ? -((d(i0, j1) - d(i0, j0)) * (1 - fu) + (d(i1, j1) - d(i1, j0)) * fu) / texel : 0.0;
+    }
     return (d(i0, j0) * (1 - fu) + d(i1, j0) * fu) * (1 - fv) + (d(i0, j1) * (1 - fu) + d(i1, j1) * fu) * fv;
 }
 
@@ -261,20 +271,29 @@ double penumbraAcrossEdge(double r, const Vec3& towardLamp, const SignSpec& sign
 double throughSign(const SignSpec& sign, const SignMask& mask, const std::vector<Hole>& holes, const Vec3& p) {
     double x = 0, y = 0;
     if (!planeCrossing(sign, p, x, y)) return 0;
-    const auto open = [&](double u, double v) {
-        return std::min({openDistance(mask, holes, u, v), mask.halfWidth - std::fabs(u), mask.halfHeight - std::fabs(v)});
-    };
-    const double d = open(x, y);
     const Vec3 towardLamp = normalize(sign.lamp - p);
+    const double cosPsi = std::fabs(dot(towardLamp, sign.facing));
+    const double r0 = std::max(penumbraRadius(sign, p), 1e-6);
+    // Outside the plate by more than the widest the lamp's image can be, the opaque edge alone hides
+    // all of it (the open distance is at most the edge's): the mask is not read (most of a frame).
+    if (std::min(mask.halfWidth - std::fabs(x), mask.halfHeight - std::fabs(y)) * cosPsi <= -r0) return 0;
+    // The open distance (openDistance, then the plate's opaque edge) and the gradient of the term
+    // that decides it: the mask's bilinear slope, a hole's radial one, or the edge's axis.
+    double gx = 0, gy = 0;
+    double d = mask.at(x, y, &gx, &gy);
+    for (const Hole& hole : holes) {
+        const double r = std::hypot(x - hole.x, y - hole.y), inside = hole.radius - r;
+        if (inside <= d) continue;
+        d = inside;
+        gx = r > 0 ? -(x - hole.x) / r : 0.0, gy = r > 0 ? -(y - hole.y) / r : 0.0;
+    }
+    if (mask.halfWidth - std::fabs(x) < d) d = mask.halfWidth - std::fabs(x), gx = x > 0 ? -1.0 : 1.0, gy = 0;
+    if (mask.halfHeight - std::fabs(y) < d) d = mask.halfHeight - std::fabs(y), gx = 0, gy = y > 0 ? -1.0 : 1.0;
     const double cone = kPi / 180 * sign.coneDegrees;
     const double inCone = smoothstep(std::cos(cone), std::cos(0.85 * cone), -dot(towardLamp, sign.facing));
-    const double r0 = std::max(penumbraRadius(sign, p), 1e-6);
-    // Beyond the widest the ellipse can be (r0 / cos psi) the point sees all of the lamp or none:
-    // the edge's normal is not needed (most of a beam; the shader skips the same two reads).
-    if (std::fabs(d) * std::fabs(dot(towardLamp, sign.facing)) >= r0) return (d > 0 ? 1.0 : 0.0) * inCone;
-    // The edge's normal in the plane: the field's gradient, one texel forward each way.
-    const double h = mask.texel;
-    const double gx = (open(x + h, y) - d) / h, gy = (open(x, y + h) - d) / h;
+    // Beyond the widest the ellipse can be (r0 / cos psi) the point sees all of the lamp or none
+    // (most of a beam).
+    if (std::fabs(d) * cosPsi >= r0) return (d > 0 ? 1.0 : 0.0) * inCone;
     return discEdgeFraction(d, penumbraAcrossEdge(r0, towardLamp, sign, gx, gy)) * inCone;
 }
 

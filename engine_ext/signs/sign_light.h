@@ -68,8 +68,9 @@ struct SignMask {
     double halfWidth = 0, halfHeight = 0;  // the plate, metres (text extent + margin)
     double spread = 0;                  // metres
     std::vector<float> distance;        // width * height, row-major, top row (+y) first
-    // Bilinear between texel centres, clamped at the border; plate coordinates in metres.
-    double at(double x, double y) const;
+    // Bilinear between texel centres, clamped at the border; plate coordinates in metres. With
+    // gx, gy: the bilinear patch's gradient there too (per metre; 0 across a clamped border).
+    double at(double x, double y, double* gx = nullptr, double* gy = nullptr) const;
 };
 
 // The mask of `sign`: its text laid out with the font's advances, at `texelsPerLetter` texels per
@@ -121,8 +122,12 @@ double penumbraAcrossEdge(double r, const Vec3& towardLamp, const SignSpec& sign
 // The share of the lamp that p sees through the sign, 0..1 (no other geometry: the game's shadow
 // map and the reference's rays add that):
 //   0 unless planeCrossing(p) gives (x, y);
-//   open(x, y) = min(openDistance(x, y), halfWidth - |x|, halfHeight - |y|)   (the plate's edge is opaque)
-//   d = open(x, y); its gradient (gx, gy) by forward differences one mask texel apart
+//   d = min(openDistance(x, y), halfWidth - |x|, halfHeight - |y|)   (the plate's edge is opaque)
+//   (gx, gy) = the gradient of the term that decides d: the mask's bilinear patch (SignMask::at),
+//   the winning hole's radial direction, or the plate edge's axis
+//   (beyond |d| cos psi >= penumbraRadius the lamp is all seen or all hidden: no gradient needed;
+//   where the plate edge's distance alone is below -penumbraRadius / cos psi the result is 0 and
+//   the mask is not read)
 //   cone = smoothstep(cos(coneDegrees), cos(0.85 coneDegrees), dot(normalize(p - lamp), facing))
 //   throughSign = discEdgeFraction(d, penumbraAcrossEdge(max(penumbraRadius(p), 1e-6),
 //                                  normalize(lamp - p), gx, gy)) x cone

@@ -26,10 +26,28 @@ const float kSignShadowBias = 0.05;             // metres: a shadow-map texel's 
 
 const float kSignPi = 3.14159265358979;
 
-float signMaskAt(int i, vec2 xy)
+// The mask's bilinear value at plate point xy (metres) and its patch's gradient (per metre), from
+// the one 2x2 neighbourhood of texels: sign_light.cpp's SignMask::at with its gradient.
+vec3 signMaskAt(int i, vec2 xy)
 {
-    vec2 uv = vec2(0.5 + 0.5 * xy.x / signPlate[i].x, 0.5 - 0.5 * xy.y / signPlate[i].y);
-    return i == 0 ? texture(signMask0, uv).r : texture(signMask1, uv).r;
+    ivec2 size = i == 0 ? textureSize(signMask0, 0) : textureSize(signMask1, 0);
+    float texel = signPlate[i].w;
+    vec2 raw = vec2((xy.x + signPlate[i].x) / texel - 0.5, (signPlate[i].y - xy.y) / texel - 0.5);
+    vec2 uv = clamp(raw, vec2(0.0), vec2(size - 1));
+    ivec2 c0 = min(ivec2(uv), size - 1), c1 = min(c0 + 1, size - 1);
+    vec2 f = uv - vec2(c0);
+    float t00, t10, t01, t11;
+    if (i == 0) {
+        t00 = texelFetch(signMask0, c0, 0).r, t10 = texelFetch(signMask0, ivec2(c1.x, c0.y), 0).r;
+        t01 = texelFetch(signMask0, ivec2(c0.x, c1.y), 0).r, t11 = texelFetch(signMask0, c1, 0).r;
+    } else {
+        t00 = texelFetch(signMask1, c0, 0).r, t10 = texelFetch(signMask1, ivec2(c1.x, c0.y), 0).r;
+        t01 = texelFetch(signMask1, ivec2(c0.x, c1.y), 0).r, t11 = texelFetch(signMask1, c1, 0).r;
+    }
+    float d = mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+    float gx = raw.x == uv.x ? mix(t10 - t00, t11 - t01, f.y) / texel : 0.0;
+    float gy = raw.y == uv.y ? -mix(t01 - t00, t11 - t10, f.x) / texel : 0.0;
+    return vec3(d, gx, gy);
 }
 
 // Of the lamp's distance as the shadow map saw it, past the surface at p: 1 lit, 0 shadowed.
@@ -49,22 +67,8 @@ float signDiscEdgeFraction(float d, float r)
     return 0.5 + (x * sqrt(1.0 - x * x) + asin(x)) / kSignPi;
 }
 
-// The open distance at plate point xy (sign_light.cpp's open()): the letters, the holes, the plate's
-// opaque edge.
-float signOpen(int i, vec2 xy)
-{
-    float d = signMaskAt(i, xy);
-    int holes = int(signPlate[i].z);
-    for (int h = 0; h < SIGN_MAX_HOLES; ++h) {
-        if (h >= holes) break;
-        vec4 hole = signHoles[i * SIGN_MAX_HOLES + h];
-        d = max(d, hole.z - length(xy - hole.xy));
-    }
-    return min(d, min(signPlate[i].x - abs(xy.x), signPlate[i].y - abs(xy.y)));
-}
-
 // sign_light.cpp's throughSign: the share of sign i's lamp p sees through the plate; the lamp's
-// disc widened across the edge by the tilt (penumbraAcrossEdge).
+// disc widened across the deciding edge by the tilt (penumbraAcrossEdge).
 float signThrough(int i, vec3 p)
 {
     vec3 lamp = signLamp[i].xyz;
@@ -73,15 +77,28 @@ float signThrough(int i, vec3 p)
     if (b <= 0.0 || a <= 0.0) return 0.0;
     vec3 q = p + (lamp - p) * (b / (a + b));
     vec2 xy = vec2(dot(q - signCentre[i], signRight[i]), dot(q - signCentre[i], signUp[i]));
-    float d = signOpen(i, xy);
     vec3 toLamp = normalize(lamp - p);
     float cosPsi = abs(dot(toLamp, signFacing[i]));
-    float inCone = smoothstep(signCone[i].x, signCone[i].y, -dot(toLamp, signFacing[i]));
     float r = max(signLamp[i].w * b / (a + b), 1e-6);
-    // Beyond the widest the ellipse can be, all of the lamp or none: no gradient needed.
+    // Outside the plate by more than the widest the lamp's image can be: the opaque edge alone hides
+    // all of it (the open distance is at most the edge's), so the mask is not read (most of a frame).
+    if (min(signPlate[i].x - abs(xy.x), signPlate[i].y - abs(xy.y)) * cosPsi <= -r) return 0.0;
+    // The open distance and the gradient of the term that decides it (mask, a hole, the edge).
+    vec3 dg = signMaskAt(i, xy);
+    int holes = int(signPlate[i].z);
+    for (int h = 0; h < SIGN_MAX_HOLES; ++h) {
+        if (h >= holes) break;
+        vec4 hole = signHoles[i * SIGN_MAX_HOLES + h];
+        float r = length(xy - hole.xy), inside = hole.z - r;
+        if (inside > dg.x) dg = vec3(inside, r > 0.0 ? -(xy - hole.xy) / r : vec2(0.0));
+    }
+    if (signPlate[i].x - abs(xy.x) < dg.x) dg = vec3(signPlate[i].x - abs(xy.x), xy.x > 0.0 ? -1.0 : 1.0, 0.0);
+    if (signPlate[i].y - abs(xy.y) < dg.x) dg = vec3(signPlate[i].y - abs(xy.y), 0.0, xy.y > 0.0 ? -1.0 : 1.0);
+    float d = dg.x;
+    float inCone = smoothstep(signCone[i].x, signCone[i].y, -dot(toLamp, signFacing[i]));
+    // Beyond the widest the ellipse can be, all of the lamp or none.
     if (abs(d) * cosPsi >= r) return (d > 0.0 ? 1.0 : 0.0) * inCone;
-    float texel = signPlate[i].w;
-    vec2 g = vec2(signOpen(i, xy + vec2(texel, 0.0)), signOpen(i, xy + vec2(0.0, texel))) - d;
+    vec2 g = dg.yz;
     vec2 tilt = vec2(dot(toLamp, signRight[i]), dot(toLamp, signUp[i]));
     if (length(tilt) > 1e-6 && length(g) > 1e-9 && cosPsi > 1e-6) {
         float c = dot(g, tilt) / (length(g) * length(tilt));

@@ -29,8 +29,6 @@ void main()
     vec3 viewPos = vec3(ndc / projScale, -1.0) * depth;
     vec3 p = (inverseView * vec4(viewPos, 1.0)).xyz;
     vec3 n = normalize(mat3(inverseView) * (texelFetch(gbufferNormal, pixel, 0).xyz * 2.0 - 1.0));
-    vec4 decal = texelFetch(decalAlbedo, min(pixel, textureSize(decalAlbedo, 0) - 1), 0);
-    vec3 albedo = pow(texelFetch(gbufferAlbedo, pixel, 0).rgb * (1.0 - decal.a) + decal.rgb, vec3(2.2));
     // 2 cm off the surface: the shadow map's texel and its depth's rounding stay behind it.
     p += n * 0.02;
     vec3 irradiance = vec3(0.0);
@@ -41,5 +39,12 @@ void main()
         vec3 e = signIrradiance(i, p, toLamp);
         irradiance += e * max(dot(n, toLamp), 0.0);
     }
+    // The albedo only where some light arrives (most pixels get none: three reads saved).
+    if (all(equal(irradiance, vec3(0.0)))) {
+        fragColour = vec4(0.0);
+        return;
+    }
+    vec4 decal = texelFetch(decalAlbedo, min(pixel, textureSize(decalAlbedo, 0) - 1), 0);
+    vec3 albedo = pow(texelFetch(gbufferAlbedo, pixel, 0).rgb * (1.0 - decal.a) + decal.rgb, vec3(2.2));
     fragColour = vec4(albedo * irradiance, 0.0);
 }
