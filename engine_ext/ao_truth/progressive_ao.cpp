@@ -74,6 +74,18 @@ void ProgressiveAo::request(const Request& r) {
     changed_.notify_all();
 }
 
+void ProgressiveAo::cancel() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!job_) return;
+        restarts_ += job_->done ? 0 : 1;
+        job_->abandoned = true;
+        job_.reset();
+    }
+    std::lock_guard<std::mutex> lock(snapshotMutex_);
+    snapshot_.reset();
+}
+
 std::shared_ptr<const Snapshot> ProgressiveAo::latest() const {
     std::lock_guard<std::mutex> lock(snapshotMutex_);
     return snapshot_;

@@ -60,6 +60,8 @@ public:
     // Never waits for a pass: the same view (Request::sameView) keeps the work going, another
     // one abandons it and starts over.
     void request(const Request& request);
+    // Stops tracing (nothing shown): the current request is dropped, its snapshot with it.
+    void cancel();
     // The latest snapshot of the current request (null before its first pass finished).
     std::shared_ptr<const Snapshot> latest() const;
     // Blocks until the current request is finished or `timeout` passes; true when finished.

@@ -69,25 +69,28 @@ std::vector<std::uint8_t> heatMapRgba(const ssao::AoImage& reference, const std:
 }
 
 std::vector<std::string> hudLines(const HudFacts& f) {
+    // Short lines: the HUD of a 320 x 180 capture holds about 37 characters.
     if (f.show == Show::Off) return {};
-    char line[200];
+    char line[160];
     std::vector<std::string> lines;
     const char* what = f.show == Show::Reference ? "reference" : f.show == Show::Mode ? "mode's AO" : "heat map";
     if (f.rays < f.totalRays)
-        std::snprintf(line, sizeof line, "truth (T): %s; tracing %dx%d, %d/%d rays (%d%%)", what, f.width, f.height, f.rays,
-                      f.totalRays, f.totalRays ? 100 * f.rays / f.totalRays : 0);
+        std::snprintf(line, sizeof line, "truth (T): %s %dx%d %d/%d rays", what, f.width, f.height, f.rays, f.totalRays);
     else
-        std::snprintf(line, sizeof line, "truth (T): %s; reference %dx%d, %d rays, done", what, f.width, f.height, f.rays);
+        std::snprintf(line, sizeof line, "truth (T): %s %dx%d %d rays", what, f.width, f.height, f.rays);
     lines.emplace_back(line);
     if (f.score) {
         const Score& s = *f.score;
-        std::snprintf(line, sizeof line, "%s MAE %.3f, occluded %.3f (%.0f%% of px) | off %.3f, occluded %.3f", f.mode.c_str(),
-                      s.mode.mae, s.mode.occludedMae, 100.0 * s.mode.occludedShare(), s.off.mae, s.off.occludedMae);
+        const std::string at = s.rays < f.totalRays ? " @" + std::to_string(s.rays) : std::string();
+        std::snprintf(line, sizeof line, "%s: MAE %.3f, occluded %.3f%s", f.mode.c_str(), s.mode.mae, s.mode.occludedMae, at.c_str());
+        if (f.mode != "off") lines.emplace_back(line);  // off's own line follows
+        std::snprintf(line, sizeof line, "off: MAE %.3f, occluded %.3f (%.0f%%)", s.off.mae, s.off.occludedMae,
+                      100.0 * s.off.occludedShare());
         lines.emplace_back(line);
-        if (s.rays < f.totalRays) lines.back() += " (at " + std::to_string(s.rays) + " rays)";
     }
     if (f.show == Show::HeatMap) {
-        std::snprintf(line, sizeof line, "heat: blue = mode darker than truth, orange = lighter, full at %.1f", kHeatFullScale);
+        lines.emplace_back("heat: mode - truth, black 0,");
+        std::snprintf(line, sizeof line, "blue -%.1f (darker), orange +%.1f", kHeatFullScale, kHeatFullScale);
         lines.emplace_back(line);
     }
     return lines;

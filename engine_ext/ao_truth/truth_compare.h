@@ -45,8 +45,10 @@ constexpr std::array<std::uint8_t, 4> kHeatSky = {40, 40, 40, 255};
 std::vector<std::uint8_t> greyRgba(const std::vector<float>& ao);
 std::vector<std::uint8_t> heatMapRgba(const ssao::AoImage& reference, const std::vector<float>& modeAo);
 
-// The HUD's lines: what is shown and the reference's progress, then, once scored, the mode's
-// whole-frame and occluded-region MAE beside off's, and for the heat map its scale.
+// The HUD's lines: what is shown and the reference's progress (rays per pixel so far), then, once
+// scored, the mode's whole-frame and occluded-region MAE ("@64": scored against a 64-ray
+// reference) and off's below it with the occluded region's share of the pixels that see
+// geometry, and for the heat map its scale.
 struct HudFacts {
     Show show = Show::Off;
     std::string mode;    // the active AO mode ("horizon")

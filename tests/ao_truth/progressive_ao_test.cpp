@@ -144,3 +144,18 @@ TEST(ProgressiveAo, RequestNeverWaitsForAPass) {
     EXPECT_LT(worst, 5ms);
     EXPECT_GE(tracer.restarts(), 190);
 }
+
+TEST(ProgressiveAo, CancelDropsTheRequestAndItsPicture) {
+    ProgressiveAo tracer(floorAndWall(), 1);
+    Request big = looking(0, 1024);
+    big.width = 320;
+    big.height = 180;
+    tracer.request(big);
+    tracer.cancel();
+    EXPECT_FALSE(tracer.latest());
+    EXPECT_FALSE(tracer.waitDone(std::chrono::milliseconds(20)));
+    // A request after it starts over and finishes.
+    tracer.request(looking(0, 8));
+    EXPECT_TRUE(tracer.waitDone(60s));
+    EXPECT_EQ(tracer.latest()->rays, 8);
+}

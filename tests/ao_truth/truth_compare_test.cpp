@@ -79,15 +79,26 @@ TEST(TruthHud, LinesSayWhatIsShownTheProgressAndTheScores) {
     f.totalRays = 256;
     auto lines = hudLines(f);
     ASSERT_EQ(lines.size(), 1u);
-    EXPECT_EQ(lines[0], "truth (T): reference; tracing 80x45, 64/256 rays (25%)");
+    EXPECT_EQ(lines[0], "truth (T): reference 80x45 64/256 rays");
     Score s = score(reference(), {0.3f, 0.99f, 0.4f, 1.0f});
-    s.rays = 256;
+    s.rays = 64;  // scored against the 64-ray reference: said so
     f.score = &s;
+    lines = hudLines(f);
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[1], "horizon: MAE 0.100, occluded 0.150 @64");
+    s.rays = 256;
     f.rays = 256;
     f.show = Show::HeatMap;
     lines = hudLines(f);
-    ASSERT_EQ(lines.size(), 3u);
-    EXPECT_EQ(lines[0], "truth (T): heat map; reference 80x45, 256 rays, done");
-    EXPECT_EQ(lines[1], "horizon MAE 0.100, occluded 0.150 (67% of px) | off 0.237, occluded 0.350");
-    EXPECT_EQ(lines[2], "heat: blue = mode darker than truth, orange = lighter, full at 0.5");
+    ASSERT_EQ(lines.size(), 5u);
+    EXPECT_EQ(lines[0], "truth (T): heat map 80x45 256 rays");
+    EXPECT_EQ(lines[1], "horizon: MAE 0.100, occluded 0.150");
+    EXPECT_EQ(lines[2], "off: MAE 0.237, occluded 0.350 (67%)");
+    EXPECT_EQ(lines[3], "heat: mode - truth, black 0,");
+    EXPECT_EQ(lines[4], "blue -0.5 (darker), orange +0.5");
+    for (const auto& l : lines) EXPECT_LE(l.size(), 37u) << l;  // fits a 320 x 180 capture's HUD
+    f.mode = "off";  // the mode is off: its line is off's
+    lines = hudLines(f);
+    ASSERT_EQ(lines.size(), 4u);
+    EXPECT_EQ(lines[1], "off: MAE 0.237, occluded 0.350 (67%)");
 }
