@@ -35,6 +35,7 @@ struct Row {
 struct ProgressiveAo::Job {
     explicit Job(const Request& r) : request(r), passes(passRays(r.rays)), rows(static_cast<std::size_t>(r.height)) {}
     const Request request;
+    const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
     const std::vector<int> passes;  // rays per pixel once each pass is done
     std::vector<Row> rows;          // a running pass's rows are each touched by one worker only
     // Guarded by ProgressiveAo::mutex_:
@@ -156,6 +157,7 @@ void ProgressiveAo::publish(Job& job, int pass) {
     s->request = job.request;
     s->rays = job.passes[pass];
     s->done = pass + 1 == static_cast<int>(job.passes.size());
+    s->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - job.start).count();
     ssao::AoImage& img = s->image;
     img.width = job.request.width;
     img.height = job.request.height;

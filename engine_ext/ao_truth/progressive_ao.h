@@ -44,6 +44,7 @@ struct Snapshot {
     int rays = 0;          // per pixel so far (0: the first pass has not finished)
     bool done = false;     // rays == request.rays
     std::uint64_t serial = 0;  // grows with every snapshot published (a new one to upload)
+    double seconds = 0;        // from the request to this snapshot (wall time; for the log, never a picture)
 };
 
 // 8, 16, 32, ... doubling up to `rays` (the last pass tops up to exactly `rays`).

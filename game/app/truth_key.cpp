@@ -18,7 +18,18 @@ TruthKey::TruthKey(frame::Frame& frame, std::function<std::vector<TriangleMesh>(
     frame_.add(*view_);
 }
 
-TruthKey::~TruthKey() = default;
+TruthKey::~TruthKey() {
+    if (cost_.frames == 0) return;
+    std::cout << "truth: render thread " << cost_.ms / cost_.frames << " ms a frame over " << cost_.frames
+              << " frames shown (max " << cost_.maxMs << " ms); " << cost_.readBacks << " read-backs, "
+              << (cost_.readBacks ? cost_.readBackMs / cost_.readBacks : 0.0) << " ms each\n";
+}
+
+namespace {
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
 
 void TruthKey::set(Show show, int rays) {
     show_ = show;
@@ -40,6 +51,7 @@ void TruthKey::beforeRender(const CameraPose& pose, int viewportWidth, int viewp
         view_->show(Show::Off);
         return;
     }
+    const auto t0 = std::chrono::steady_clock::now();
     request_.pose = pose;
     request_.width = std::max(1, static_cast<int>(std::lround(viewportWidth * kTruthScale)));
     request_.height = std::max(1, static_cast<int>(std::lround(viewportHeight * kTruthScale)));
@@ -51,17 +63,33 @@ void TruthKey::beforeRender(const CameraPose& pose, int viewportWidth, int viewp
         score_.reset();
         pictureOfThisView_ = false;
     }
-    if (latest && (!snapshot_ || latest->serial != snapshot_->serial)) rescore_ = true;
+    if (latest && (!snapshot_ || latest->serial != snapshot_->serial)) {
+        rescore_ = true;
+        if (latest->done)  // the figure engine_ext/ao_truth/README.md gives
+            std::cout << "truth: reference " << request_.width << "x" << request_.height << ", " << latest->rays
+                      << " rays, finished in " << latest->seconds << " s (" << threads_ << " thread(s))\n";
+    }
     snapshot_ = std::move(latest);
     // The mode's AO buffer is live; the reference and the heat map wait for a snapshot of this view.
     // (an earlier pass's picture of this view stays until the next one is uploaded after this frame).
     view_->show(show_ == Show::Mode || (pictureOfThisView_ && uploadedShow_ == show_) ? show_ : Show::Off);
+    ++cost_.frames;
+    frameMs_ = msSince(t0);
 }
 
 void TruthKey::afterRender(const AoReader& readAo) {
-    if (show_ == Show::Off || !snapshot_) return;
+    if (show_ == Show::Off) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (snapshot_) afterRenderShown(readAo);
+    frameMs_ += msSince(t0);
+    cost_.ms += frameMs_;
+    cost_.maxMs = std::max(cost_.maxMs, frameMs_);
+}
+
+void TruthKey::afterRenderShown(const AoReader& readAo) {
     const ssao::AoImage& ref = snapshot_->image;
     if (rescore_) {
+        const auto t0 = std::chrono::steady_clock::now();
         // Once per refinement or settings change: the read-back waits for the GPU (README: its cost).
         int w = 0, h = 0;
         const std::vector<float> buffer = readAo(w, h);
@@ -71,6 +99,8 @@ void TruthKey::afterRender(const AoReader& readAo) {
         heatMap_ = ao_truth::heatMapRgba(ref, mode);
         rescore_ = false;
         uploaded_ = 0;
+        ++cost_.readBacks;
+        cost_.readBackMs += msSince(t0);
     }
     if ((show_ == Show::Reference || show_ == Show::HeatMap) && (uploaded_ != snapshot_->serial || uploadedShow_ != show_)) {
         view_->upload(ref.width, ref.height, show_ == Show::Reference ? ao_truth::greyRgba(ref.ao) : heatMap_);

@@ -48,6 +48,8 @@ public:
     void waitDone() const;
 
 private:
+    void afterRenderShown(const AoReader& readAo);
+
     frame::Frame& frame_;
     std::function<std::vector<TriangleMesh>()> meshes_;
     int threads_;
@@ -63,6 +65,13 @@ private:
     std::uint64_t uploaded_ = 0;  // the snapshot serial of the picture on the GPU ...
     ao_truth::Show uploadedShow_ = ao_truth::Show::Off;  // ... which picture it is ...
     bool pictureOfThisView_ = false;  // ... and whether it is of the view being traced
+    // The render thread's time in this class while something is shown (printed at exit: the
+    // README's cost figures), and in the read-backs with their scoring and upload.
+    struct Cost {
+        long frames = 0, readBacks = 0;
+        double ms = 0, maxMs = 0, readBackMs = 0;
+    } cost_;
+    double frameMs_ = 0;
 };
 
 }  // namespace obscura
