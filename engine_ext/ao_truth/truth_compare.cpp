@@ -69,7 +69,7 @@ std::vector<std::uint8_t> heatMapRgba(const ssao::AoImage& reference, const std:
 }
 
 std::vector<std::string> hudLines(const HudFacts& f) {
-    // Short lines: the HUD of a 320 x 180 capture holds about 37 characters.
+    // Short lines: the HUD of a 320 x 180 capture holds about 44 characters.
     if (f.show == Show::Off) return {};
     char line[160];
     std::vector<std::string> lines;
@@ -82,7 +82,8 @@ std::vector<std::string> hudLines(const HudFacts& f) {
     if (f.score) {
         const Score& s = *f.score;
         const std::string at = s.rays < f.totalRays ? " @" + std::to_string(s.rays) : std::string();
-        std::snprintf(line, sizeof line, "%s: MAE %.3f, occluded %.3f%s", f.mode.c_str(), s.mode.mae, s.mode.occludedMae, at.c_str());
+        std::snprintf(line, sizeof line, "%s: MAE %.3f, occluded %.3f %+.3f%s", f.mode.c_str(), s.mode.mae, s.mode.occludedMae,
+                      s.mode.occludedBias, at.c_str());
         if (f.mode != "off") lines.emplace_back(line);  // off's own line follows
         std::snprintf(line, sizeof line, "off: MAE %.3f, occluded %.3f (%.0f%%)", s.off.mae, s.off.occludedMae,
                       100.0 * s.off.occludedShare());

@@ -46,7 +46,8 @@ std::vector<std::uint8_t> greyRgba(const std::vector<float>& ao);
 std::vector<std::uint8_t> heatMapRgba(const ssao::AoImage& reference, const std::vector<float>& modeAo);
 
 // The HUD's lines: what is shown and the reference's progress (rays per pixel so far), then, once
-// scored, the mode's whole-frame and occluded-region MAE ("@64": scored against a 64-ray
+// scored, the mode's whole-frame and occluded-region MAE and the occluded region's bias (mode -
+// truth: + is too light) ("@64": scored against a 64-ray
 // reference) and off's below it with the occluded region's share of the pixels that see
 // geometry, and for the heat map its scale.
 struct HudFacts {
