@@ -39,6 +39,7 @@ std::vector<float> resampleNearest(const std::vector<float>& src, int sw, int sh
 // shows at half to two thirds of full colour; a crease a mode misses entirely saturates.
 constexpr double kHeatFullScale = 0.5;
 std::array<std::uint8_t, 4> heatColour(double modeMinusTruth);
+// Sky: no truth there; a dark grey apart from the black of agreement.
 constexpr std::array<std::uint8_t, 4> kHeatSky = {40, 40, 40, 255};
 
 // RGBA8 images at the reference's size, top row first: the reference's AO as grey, and the heat map.

@@ -124,6 +124,7 @@ std::vector<std::string> TruthKey::hudLines(const std::string& mode) const {
 
 void TruthKey::waitDone() const {
     if (show_ == Show::Off) return;
+    // A hang detector: 256 rays at 320 x 180 take about a second here, 4096 rays about 15 s.
     if (!tracer_->waitDone(std::chrono::minutes(10)))
         throw std::runtime_error("truth key: the reference was not finished after 10 minutes");
 }
