@@ -67,10 +67,10 @@ void ProgressiveAo::request(const Request& r) {
             job_->abandoned = true;
         }
         job_ = std::make_shared<Job>(r);  // small: the rows' state is made by the workers
-    }
-    {
-        std::lock_guard<std::mutex> lock(snapshotMutex_);
-        snapshot_.reset();  // the old view's picture is not this one's
+        // The old view's picture is not this one's. Under mutex_ (then snapshotMutex_, as publish
+        // takes them), so a first pass published meanwhile is never dropped after it.
+        std::lock_guard<std::mutex> swap(snapshotMutex_);
+        snapshot_.reset();
     }
     changed_.notify_all();
 }
@@ -82,9 +82,9 @@ void ProgressiveAo::cancel() {
         restarts_ += job_->done ? 0 : 1;
         job_->abandoned = true;
         job_.reset();
+        std::lock_guard<std::mutex> swap(snapshotMutex_);
+        snapshot_.reset();
     }
-    std::lock_guard<std::mutex> lock(snapshotMutex_);
-    snapshot_.reset();
 }
 
 std::shared_ptr<const Snapshot> ProgressiveAo::latest() const {
