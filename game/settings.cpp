@@ -7,6 +7,7 @@
 #include "frame/frame_knobs.h"
 #include "ssao/ssao_knobs.h"
 #include "ssao/ssao_modes.h"
+#include "ao_truth/truth_compare.h"
 
 #include <boost/program_options.hpp>
 
@@ -32,7 +33,7 @@ namespace obscura {
 namespace {
 
 const char* const kActionNames[] = {"forward", "back", "left", "right", "jump", "crouch", "sprint", "fire",
-                                    "reload", "throw", "cycle_ao", "ao_only_view", "cycle_view", "toggle_debug",
+                                    "reload", "throw", "cycle_ao", "ao_only_view", "cycle_view", "cycle_truth", "toggle_debug",
                                     "screenshot", "menu"};
 static_assert(sizeof(kActionNames) / sizeof(kActionNames[0]) == static_cast<size_t>(Action::Count));
 
@@ -152,6 +153,7 @@ Settings::Settings() {
                 {Action::Right, "d"},        {Action::Jump, "space"},     {Action::Crouch, "lctrl"},
                 {Action::Sprint, "lshift"},  {Action::Fire, "mouse1"},    {Action::Reload, "r"},
                 {Action::Throw, "g"},        {Action::CycleAo, "o"},      {Action::AoOnlyView, "p"},   {Action::CycleView, "v"},
+                {Action::CycleTruth, "t"},
                 {Action::ToggleDebug, "f1"}, {Action::Screenshot, "f12"}, {Action::Menu, "escape"}};
 }
 
@@ -167,7 +169,7 @@ struct Option {
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "volume-dump", "light-dump", "smoke-dump", "replay", "capture-dir", "record",
                                     "timedemo", "config", "data-dir", "log", "debug-max-render-targets",
-                                    "debug-unsupported-formats", "smoke-resolution"};
+                                    "debug-unsupported-formats", "smoke-resolution", "truth-threads"};
 
 struct SettingsParser::Impl {
     std::vector<Option> options;
@@ -278,6 +280,13 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
            integer(&S::ssaoSamples, ssao::kSamples.name, ssao::kSamples.min, ssao::kSamples.max)});
     I.add({"view", "what the frame shows at the start: scene, ao, albedo, normal, depth, direct-light, hdr-light (V cycles)",
            str(&S::view)});
+    I.add({"truth", "the AO truth key's picture over the frame: off, reference, mode, heatmap (T cycles; engine_ext/ao_truth)",
+           [](S& s, W v, W where) {
+               if (!ao_truth::showFromName(v)) fail(where, "truth", q(v) + ", expected off, reference, mode or heatmap");
+               s.truth = std::string(v);
+           }});
+    I.add({"truth-rays", "the AO truth's rays per pixel (8 to 4096)", integer(&S::truthRays, "truth-rays", 8, 4096)});
+    I.add({"truth-threads", "the AO truth's tracing threads (1 to 16)", integer(&S::truthThreads, "truth-threads", 1, 16)});
     I.add({"sign-mode", "back-lit signs' light: off, shafts, meshuggah (the seed's rays, for comparison; engine_ext/signs)", [](S& s, W v, W where) {
                if (v != "off" && v != "shafts" && v != "meshuggah") fail(where, "sign-mode", q(v) + ", expected off, shafts or meshuggah");
                s.signMode = std::string(v);

@@ -27,7 +27,7 @@ struct SettingsError : std::runtime_error {
 // Game actions a key or mouse button can be bound to. O is reserved for cycle_ao.
 enum class Action {
     Forward, Back, Left, Right, Jump, Crouch, Sprint, Fire, Reload, Throw,
-    CycleAo, AoOnlyView, CycleView, ToggleDebug, Screenshot, Menu, Count
+    CycleAo, AoOnlyView, CycleView, CycleTruth, ToggleDebug, Screenshot, Menu, Count
 };
 const char* actionName(Action a);
 std::optional<Action> actionFromName(const std::string& name);
@@ -76,6 +76,12 @@ struct Settings {
     double signHaze = signs::kHaze.value;
     std::string view = "scene";  // what the frame shows at the start (V cycles): scene, ao, albedo, ...
     bool aoOnly = false;         // show the AO term alone (P toggles it)
+    // The truth key (engine_ext/ao_truth, T cycles): what is shown over the frame (off, reference,
+    // mode, heatmap), the reference's rays per pixel (256: ssao/README's table's, noise up to
+    // +-0.03) and the tracer's threads (1: this machine's second core draws the frame, llvmpipe).
+    std::string truth = "off";
+    int truthRays = 256;
+    int truthThreads = 1;
     // Headless runs
     bool headless = false;
     long ticks = 0;              // 0 = run until quit (windowed) / 300 (headless)

@@ -1,7 +1,6 @@
 // See ao_reference.h.
 #include "ssao/ao_reference.h"
 
-#include "core/rng.h"
 #include "raytrace/ray_scene.h"
 
 #include <cmath>
@@ -26,10 +25,15 @@ AoReference::AoReference(const std::vector<TriangleMesh>& meshes) : impl_(std::m
 AoReference::~AoReference() = default;
 
 double AoReference::aoAt(const Vec3& p, const Vec3& n, double radius, int rays, std::uint64_t seed) const {
+    Rng rng(seed);
+    const int open = openRays(p, n, radius, rays, rng);
+    return rays > 0 ? static_cast<double>(open) / rays : 1.0;
+}
+
+int AoReference::openRays(const Vec3& p, const Vec3& n, double radius, int rays, Rng& rng) const {
     // An orthonormal frame around the normal, then cosine-weighted directions (Malley's method).
     const Vec3 a = std::fabs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
     const Vec3 t = normalize(cross(a, n)), b = cross(n, t);
-    Rng rng(seed);
     int open = 0;
     for (int i = 0; i < rays; ++i) {
         const double u1 = rng.uniform01d(), u2 = rng.uniform01d();
@@ -37,7 +41,17 @@ double AoReference::aoAt(const Vec3& p, const Vec3& n, double radius, int rays, 
         const Vec3 d = t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * std::sqrt(std::max(0.0, 1 - u1));
         open += !impl_->scene.occluded(p + n * kRayOffset, d, kRayOffset, static_cast<float>(radius));
     }
-    return rays > 0 ? static_cast<double>(open) / rays : 1.0;
+    return open;
+}
+
+bool AoReference::visibleSurface(const CameraPose& pose, int width, int height, int x, int y, Vec3& p, Vec3& n) const {
+    const Vec3 dir = cameraRay(pose, width, height, x + 0.5, y + 0.5);
+    double t = 0;
+    if (!impl_->scene.intersect(pose.eye, dir, 0, std::numeric_limits<double>::infinity(), t, n)) return false;
+    n = normalize(n);
+    if (dot(n, dir) > 0) n = -n;  // the side facing the camera
+    p = pose.eye + dir * t;
+    return true;
 }
 
 AoImage AoReference::render(const CameraPose& pose, int width, int height, double radius, int rays, int threads) const {
@@ -49,16 +63,11 @@ AoImage AoReference::render(const CameraPose& pose, int width, int height, doubl
     auto rowJob = [&](int y0) {
         for (int y = y0; y < height; y += threads)
             for (int x = 0; x < width; ++x) {
-                const Vec3 dir = cameraRay(pose, width, height, x + 0.5, y + 0.5);
-                double t = 0;
-                Vec3 n;
-                if (!impl_->scene.intersect(pose.eye, dir, 0, std::numeric_limits<double>::infinity(), t, n)) continue;
-                n = normalize(n);
-                if (dot(n, dir) > 0) n = -n;  // the side facing the camera
-                const Vec3 p = pose.eye + dir * t;
+                Vec3 p, n;
+                if (!visibleSurface(pose, width, height, x, y, p, n)) continue;
                 const auto i = static_cast<std::size_t>(y) * width + x;
                 img.hit[i] = 1;
-                img.ao[i] = static_cast<float>(aoAt(p, n, radius, rays, 0x9e3779b97f4a7c15ULL ^ i));
+                img.ao[i] = static_cast<float>(aoAt(p, n, radius, rays, pixelSeed(i)));
             }
     };
     threads = std::max(1, threads);

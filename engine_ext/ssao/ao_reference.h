@@ -6,6 +6,7 @@
 // count gives the same image.
 #pragma once
 
+#include "core/rng.h"
 #include "core/triangle_mesh.h"
 #include "core/vec3.h"
 #include "raytrace/camera_pose.h"
@@ -34,6 +35,17 @@ public:
     AoImage render(const CameraPose& pose, int width, int height, double radius, int rays, int threads = 2) const;
     // AO at one surface point with its normal (exposed for tests).
     double aoAt(const Vec3& point, const Vec3& normal, double radius, int rays, std::uint64_t seed) const;
+
+    // The pieces render() is made of, for a tracer that refines a view in passes
+    // (engine_ext/ao_truth): the same calls in the same order give the same image.
+    // The visible surface through pixel (x, y)'s centre and its normal facing the camera; false for sky.
+    bool visibleSurface(const CameraPose& pose, int width, int height, int x, int y, Vec3& point, Vec3& normal) const;
+    // How many of the next `rays` cosine-weighted rays drawn from `rng` travel `radius` unblocked:
+    // aoAt(p, n, r, a + b, seed) == (openRays(p, n, r, a, rng) + openRays(p, n, r, b, rng)) / (a + b)
+    // for an rng seeded with `seed`.
+    int openRays(const Vec3& point, const Vec3& normal, double radius, int rays, Rng& rng) const;
+    // The seed of pixel i's rays (row-major index).
+    static std::uint64_t pixelSeed(std::size_t i) { return 0x9e3779b97f4a7c15ULL ^ i; }
 
 private:
     struct Impl;

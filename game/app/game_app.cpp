@@ -15,6 +15,7 @@
 #include "session.h"
 #include "smoke/smoke_dump.h"
 #include "ssao/ssao_modes.h"
+#include "ao_truth/truth_compare.h"
 #include "stop_signal.h"
 
 #include <Ogre.h>
@@ -217,6 +218,11 @@ void GameApp::handleActions() {
                 settings_.aoOnly = v == "ao";
                 break;
             }
+            case Action::CycleTruth:
+                // off -> reference -> the mode's AO -> heat map -> off (app/truth_key.h).
+                settings_.truth = ao_truth::showName(ao_truth::nextShow(*ao_truth::showFromName(settings_.truth)));
+                view_->setTruth(settings_.truth, settings_.truthRays);
+                break;
             case Action::AoOnlyView:
                 settings_.aoOnly = !settings_.aoOnly;
                 applyAoSettings();
@@ -262,7 +268,16 @@ bool GameApp::paused() const { return menu_->isOpen(); }
 bool GameApp::quitRequested() const { return quit_ || mRoot->endRenderingQueued(); }
 std::uint64_t GameApp::simTick() const { return session_->tick(); }
 std::string GameApp::stateHashHex() const { return session_->sim().stateHashHex(); }
-void GameApp::writeScreenshot(const std::string& path) { view_->writeScreenshot(path); }
+void GameApp::writeScreenshot(const std::string& path) {
+    if (settings_.headless && view_->truthShown()) {
+        // A headless capture of the truth is the finished reference's, scored: wait for the
+        // tracer, then one frame takes the reference and scores the mode, the next shows both.
+        // The live game never waits (app/truth_key.h); rendering drives nothing in the simulation.
+        view_->waitTruth();
+        for (int frame = 0; frame < 2; ++frame) present(1.0, 1000.0 / settings_.tickRate);
+    }
+    view_->writeScreenshot(path);
+}
 void GameApp::finishFrame() { view_->finishFrame(); }
 
 InputRouting GameApp::routing() const {
@@ -395,6 +410,8 @@ void GameApp::applySetting(const std::string& key, const std::string& value, con
         view_->setFov(settings_.fov);
     } else if (key.rfind("ssao", 0) == 0 || key == "ao-only" || key == "exposure") {
         applyAoSettings();
+    } else if (key == "truth" || key == "truth-rays") {
+        view_->setTruth(settings_.truth, settings_.truthRays);
     } else if (key == "sign-mode" || key == signs::kHaze.name) {
         view_->setSigns(settings_.signMode, settings_.signHaze);
     } else if (key == "smoke-at") {

@@ -2,6 +2,8 @@
 #include "app/render_view.h"
 
 #include "app/combat_view.h"
+#include "app/truth_key.h"
+#include "raytrace/level_triangles.h"
 #include "render/hud.h"
 #include "render/level_geometry.h"
 #include "render/level_lighting.h"
@@ -142,6 +144,17 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
         }
     }
 
+    // The truth key's tracer gets the level's triangles as tools/aoref loads them (the movers where
+    // the level starts them), when something is first shown. The session outlives this view.
+    fov_ = settings.fov;
+    auto meshes = [&level, modelDirs] {
+        auto triangles = levelTriangles(level);
+        addModelTriangles(level, modelDirs, triangles);
+        return triangles;
+    };
+    truth_ = std::make_unique<TruthKey>(*frame_, meshes, settings.truthThreads);
+    setTruth(settings.truth, settings.truthRays);
+
     combat_ = std::make_unique<CombatView>(*scene_, *materials_, *cameraNode_, session.durations());
     hud_ = std::make_unique<render::Hud>();
     hud_->setPanelVisible(settings.showDebugPanel);
@@ -151,6 +164,7 @@ RenderView::~RenderView() {
     // Order matters (see shared/README): our OGRE objects first, then the scene manager.
     hud_.reset();
     frame_.reset();  // before the techniques plugged into it
+    truth_.reset();
     smoke_.reset();
     signs_.reset();
     combat_.reset();
@@ -188,6 +202,8 @@ void RenderView::applyAo(const AoSettings& a) {
     k.resolution = a.resolution;
     ao_->setKnobs(k);
     ao_->setMode(a.mode);  // the frame rebuilds its chain at the next frame
+    aoRadius_ = a.radius;  // the truth traces at the mode's radius
+    if (truth_) truth_->aoChanged();
     aoMode_ = a.mode;
     rebakeHeightMapIfStale();
     if (a.aoOnly) frame_->setView("ao");
@@ -206,7 +222,16 @@ std::string RenderView::aoStatus() const {
     return frame_->offReason(*ao_).empty() ? ao_->mode() : ao_->mode() + " (off here)";
 }
 
+void RenderView::setTruth(const std::string& show, int rays) {
+    truth_->set(ao_truth::showFromName(show).value_or(ao_truth::Show::Off), rays);  // validated by the settings
+}
+
+bool RenderView::truthShown() const { return truth_->show() != ao_truth::Show::Off; }
+
+void RenderView::waitTruth() const { truth_->waitDone(); }
+
 void RenderView::setFov(double horizontalDegrees) {
+    fov_ = horizontalDegrees;
     camera_->setFOVy(verticalFov(horizontalDegrees, camera_->getAspectRatio()));
 }
 
@@ -229,6 +254,8 @@ void RenderView::update(const Session& session, double alpha) {
     dyaw = std::remainder(dyaw, 2.0 * kPi);
     const double yaw = a.yaw + dyaw * alpha;
     const double pitch = a.pitch + (b.pitch - a.pitch) * alpha;
+    yaw_ = yaw;
+    pitch_ = pitch;
     cameraNode_->setPosition(static_cast<float>(eye_.x), static_cast<float>(eye_.y), static_cast<float>(eye_.z));
     cameraNode_->setOrientation(Ogre::Quaternion(Ogre::Radian(static_cast<float>(yaw)), Ogre::Vector3::UNIT_Y) *
                                 Ogre::Quaternion(Ogre::Radian(static_cast<float>(pitch)), Ogre::Vector3::UNIT_X));
@@ -277,6 +304,9 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     hs.frameMsIsFixed = frame.frameMsIsFixed;
     hs.status.push_back("AO: " + aoStatus() + (frame_->view() == "ao" ? " (AO only)" : ""));
     if (frame_->view() != "scene" && frame_->view() != "ao") hs.status.push_back("view: " + frame_->view() + " (V)");
+    truth_->beforeRender(CameraPose{eye_, yaw_, pitch_, fov_}, static_cast<int>(viewport_->getActualWidth()),
+                         static_cast<int>(viewport_->getActualHeight()), aoRadius_);
+    for (const auto& line : truth_->hudLines(aoStatus())) hs.status.push_back(line);
     // Health shows only once slime or lava took some (the usual HUD stays as it was).
     const auto& player = session.sim().player();
     if (player.health < 100 || session.sim().deaths() > 0)
@@ -304,6 +334,31 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     // liquid, if any, tints and fogs the view.
     render::setLiquidView(static_cast<double>(session.sim().tick()) * session.sim().dt(), liquids_.at(eye_));
     root_.renderOneFrame();
+    truth_->afterRender([this](int& w, int& h) {
+        // The mode's AO (red) as its last pass wrote it; the 1x1 stand-in (1, 0) while AO is off.
+        const Ogre::TexturePtr tex = frame_->published("aoMap");
+        w = static_cast<int>(tex->getWidth());
+        h = static_cast<int>(tex->getHeight());
+        const std::vector<float> rgba = readRgba(tex);
+        std::vector<float> ao(rgba.size() / 4);
+        for (std::size_t i = 0; i < ao.size(); ++i) ao[i] = rgba[i * 4];
+        return ao;
+    });
+}
+
+std::vector<float> RenderView::readRgba(const Ogre::TexturePtr& tex) const {
+    const auto w = tex->getWidth(), h = tex->getHeight();
+    std::vector<float> stored(static_cast<std::size_t>(w) * h * 4), out(stored.size());
+    tex->getBuffer()->blitToMemory(Ogre::PixelBox(w, h, 1, Ogre::PF_FLOAT32_RGBA, stored.data()));
+    // blitToMemory gives a render texture stored upside down (GL's, flipY) with the picture's top
+    // row first; one stored the right way up, bottom row first.
+    const std::size_t row = static_cast<std::size_t>(w) * 4;
+    for (std::size_t y = 0; y < h; ++y) {
+        const std::size_t from = frame_->flipY() ? y : h - 1 - y;
+        std::copy(stored.begin() + static_cast<std::ptrdiff_t>(from * row), stored.begin() + static_cast<std::ptrdiff_t>((from + 1) * row),
+                  out.begin() + static_cast<std::ptrdiff_t>(y * row));
+    }
+    return out;
 }
 
 void RenderView::finishFrame() {
@@ -326,18 +381,10 @@ void RenderView::writeBufferDump(const std::string& unit, const std::string& pat
     } else {
         out.width = static_cast<int>(tex->getWidth());
         out.height = static_cast<int>(tex->getHeight());
-        std::vector<float> rgba(static_cast<std::size_t>(out.width) * out.height * 4);
-        tex->getBuffer()->blitToMemory(Ogre::PixelBox(tex->getWidth(), tex->getHeight(), 1, Ogre::PF_FLOAT32_RGBA, rgba.data()));
+        const std::vector<float> rgba = readRgba(tex);
         out.rgb.resize(static_cast<std::size_t>(out.width) * out.height * 3);
-        for (int y = 0; y < out.height; ++y) {
-            // blitToMemory gives a render texture stored upside down (GL's, flipY) with the
-            // picture's top row first; one stored the right way up, bottom row first.
-            const int from = frame_->flipY() ? y : out.height - 1 - y;
-            for (int x = 0; x < out.width; ++x)
-                for (int c = 0; c < 3; ++c)
-                    out.rgb[(static_cast<std::size_t>(y) * out.width + x) * 3 + c] =
-                        rgba[(static_cast<std::size_t>(from) * out.width + x) * 4 + c];
-        }
+        for (std::size_t i = 0; i < rgba.size() / 4; ++i)
+            for (int c = 0; c < 3; ++c) out.rgb[i * 3 + c] = rgba[i * 4 + c];
     }
     writePfm(out, path);
 }

@@ -32,6 +32,7 @@ namespace ssao { class AmbientOcclusion; }
 namespace decals { class DecalRender; }
 class CombatView;
 class Session;
+class TruthKey;
 
 class RenderView {
 public:
@@ -79,6 +80,13 @@ public:
     // The next of the frame's views (scene, ao, the G-buffer's ...); returns it.
     std::string cycleView();
 
+    // The AO truth key (app/truth_key.h): what is shown ("off", "reference", "mode", "heatmap",
+    // settings.truth) and the reference's rays per pixel.
+    void setTruth(const std::string& show, int rays);
+    bool truthShown() const;
+    // Headless captures: waits for the reference (the next two frames then show and score it).
+    void waitTruth() const;
+
     // Camera: horizontal field of view (degrees); a resized window's new aspect.
     void setFov(double horizontalDegrees);
     // The back-lit signs: "off", "shafts" or "meshuggah", and the haze per metre (settings.signMode, signHaze).
@@ -106,6 +114,8 @@ public:
 
 private:
     Ogre::RenderTarget& target();
+    // A texture's texels as float RGBA, the picture's top row first.
+    std::vector<float> readRgba(const Ogre::TexturePtr& tex) const;
     // Bakes the AO height map again when the movers rest elsewhere than at the last bake and the
     // heightfield mode (the one that reads it) is on.
     void rebakeHeightMapIfStale();
@@ -131,6 +141,8 @@ private:
     std::unique_ptr<frame::Frame> frame_;  // the pass order; ao_, decals_ and smoke_ plug into it
     std::unique_ptr<CombatView> combat_;
     std::unique_ptr<render::Hud> hud_;
+    std::unique_ptr<TruthKey> truth_;  // plugs a pass into frame_
+    double yaw_ = 0, pitch_ = 0, fov_ = 90, aoRadius_ = 0;  // the camera as drawn (radians, degrees), the AO radius
     std::uint64_t smokeUploaded_ = 0;  // GameSmoke::version() of the fields on the GPU
     Ogre::AxisAlignedBox heightBounds_;  // the AO height map's box (null: no brushes)
     std::string aoMode_;

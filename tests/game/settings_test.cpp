@@ -311,3 +311,33 @@ TEST(Settings, SignModeIsValidated) {
     }
     EXPECT_EQ(errorOf({"--sign-mode", "rays"}), "command line: setting 'sign-mode': 'rays', expected off, shafts or meshuggah");
 }
+
+TEST(Settings, TruthKeyIsBoundValidatedAndRuntime) {
+    Settings s;
+    EXPECT_EQ(s.bindings.at(Action::CycleTruth), "t");
+    EXPECT_EQ(std::string(actionName(Action::CycleTruth)), "cycle_truth");
+    EXPECT_EQ(s.truth, "off");
+    EXPECT_EQ(s.truthRays, 256);
+    EXPECT_EQ(s.truthThreads, 1);
+    for (const char* show : {"off", "reference", "mode", "heatmap"}) {
+        ASSERT_TRUE(parseArgs({"--truth", show}, s));
+        EXPECT_EQ(s.truth, show);
+    }
+    EXPECT_EQ(errorOf({"--truth", "heat-map"}), "command line: setting 'truth': 'heat-map', expected off, reference, mode or heatmap");
+    EXPECT_NE(errorOf({"--truth-rays", "4"}).find("'4' is out of range, expected 8 to 4096"), std::string::npos);
+    ASSERT_TRUE(parseArgs({"--bind-cycle_truth", "y", "--truth-threads", "2"}, s));
+    EXPECT_EQ(s.bindings.at(Action::CycleTruth), "y");  // rebindable like the others
+    EXPECT_EQ(s.truthThreads, 2);
+    // A replay may `set truth ...` and the rays, not the threads (the tracer's pool is made once);
+    // a bad value names the script's line.
+    SettingsParser p;
+    EXPECT_TRUE(p.isRuntime("truth"));
+    EXPECT_TRUE(p.isRuntime("truth-rays"));
+    EXPECT_FALSE(p.isRuntime("truth-threads"));
+    try {
+        p.apply("truth", "on", s, "t.replay:7");
+        ADD_FAILURE() << "no error";
+    } catch (const SettingsError& e) {
+        EXPECT_EQ(std::string(e.what()), "t.replay:7: setting 'truth': 'on', expected off, reference, mode or heatmap");
+    }
+}

@@ -77,6 +77,16 @@ TEST(ReplayBench, ScriptErrorsExitWithFileAndLine) {
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.out.find(bad + ":3: setting 'fov': 'wide' is not a number"), std::string::npos) << r.out;
 
+    // The truth key's picture: one of four names; its threads are fixed at the start.
+    std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n0 set truth reference\n5 set truth heat\n";
+    r = sh("'" + kGame + "' --replay " + bad + " --capture-dir " + temp("cap_e"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find(bad + ":4: setting 'truth': 'heat', expected off, reference, mode or heatmap"), std::string::npos) << r.out;
+    std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 set truth-threads 2\n";
+    r = sh("'" + kGame + "' --replay " + bad + " --capture-dir " + temp("cap_e"));
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.out.find("unknown setting 'truth-threads'"), std::string::npos) << r.out;
+
     std::ofstream(bad) << "obscura-replay 1\nlevel media/levels/arena.map\n5 set width 100\n";
     r = sh("'" + kGame + "' --replay " + bad + " --capture-dir " + temp("cap_e"));
     EXPECT_EQ(r.code, 2);
