@@ -258,7 +258,7 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
            num(&S::debugDecalsCone, "debug-decals-cone", 0, 90)});
     I.add({"mouse-sensitivity", "mouse sensitivity, 0.01 to 20 (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
     I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
-    I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield (O cycles them)", [](S& s, W v, W where) {
+    I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield, combined (O cycles them)", [](S& s, W v, W where) {
                if (!ssao::isMode(v)) {
                    std::string all;
                    for (const auto& m : ssao::modeNames()) all += (all.empty() ? "" : ", ") + m;
@@ -267,6 +267,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                s.ssao = v;
            }});
     I.add({ssao::kRadius.name, "AO radius in metres " + rangeText(ssao::kRadius), knob(&S::ssaoRadius, ssao::kRadius)});
+    I.add({ssao::kLargeRadius.name, "the combined AO mode's large-scale radius in metres " + rangeText(ssao::kLargeRadius),
+           knob(&S::ssaoLargeRadius, ssao::kLargeRadius)});
     I.add({ssao::kIntensity.name, "AO strength " + rangeText(ssao::kIntensity), knob(&S::ssaoIntensity, ssao::kIntensity)});
     I.add({"ssao-resolution", "AO buffer resolution: full, half or quarter", [](S& s, W v, W where) {
                if (v != "half" && v != "full" && v != "quarter")

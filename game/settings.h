@@ -61,6 +61,7 @@ struct Settings {
     // 32-sample hemisphere.
     std::string ssao = "horizon";
     double ssaoRadius = ssao::kRadius.value;  // defaults and reasons: engine_ext/ssao/ssao_knobs.h
+    double ssaoLargeRadius = ssao::kLargeRadius.value;  // the combined mode's large scale
     double ssaoIntensity = ssao::kIntensity.value;
     int ssaoSamples = static_cast<int>(ssao::kSamples.value);
     // AO buffers at a quarter of the width and height: with the depth-aware blur and upsampling it

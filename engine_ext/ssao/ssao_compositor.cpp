@@ -4,6 +4,7 @@
 #include "core/rng.h"
 #include "ssao/ssao_kernel.h"
 #include "ssao/ssao_knobs.h"
+#include "ssao/ssao_modes.h"
 #include "ssao/ssao_shared.h"
 
 #include <Ogre.h>
@@ -141,7 +142,7 @@ std::string AmbientOcclusion::compositor() const {
 }
 
 std::string AmbientOcclusion::configuration() const {
-    return std::to_string(knobs_.resolution) + (mode_ == "heightfield" ? " map " + std::to_string(heightMapVersion_) : "");
+    return std::to_string(knobs_.resolution) + (readsHeightMap(mode_) ? " map " + std::to_string(heightMapVersion_) : "");
 }
 
 std::string AmbientOcclusion::missingFeature(const frame::Gpu& gpu) const {
@@ -173,10 +174,11 @@ void AmbientOcclusion::bind(Ogre::uint32 passId, Ogre::Pass&, frame::Uniforms& u
         // Sphere kernels for the depth-only and cone modes, hemispheres for the normal-oriented ones.
         const auto& kernels = mode_ == "crytek" || mode_ == "cone" ? sphereKernels_ : hemisphereKernels_;
         u.setArray("kernel", kernels[static_cast<std::size_t>(samples - 1)].data(), SSAO_MAX_SAMPLES, 3);
-        if (mode_ == "heightfield") {
+        if (readsHeightMap(mode_)) {
             u.set("inverseView", ctx.camera->getViewMatrix().inverse());
             u.set("heightViewProj", heightViewProj_);
         }
+        if (mode_ == "combined") u.set("largeRadius", static_cast<float>(kLargeRadius.clamp(knobs_.largeRadius)));
     } else if (passId == kBlurX || passId == kBlurY) {
         u.set("direction", passId == kBlurX ? Ogre::Vector2(1, 0) : Ogre::Vector2(0, 1));
     }

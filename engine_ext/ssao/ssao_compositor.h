@@ -23,6 +23,7 @@ namespace obscura::ssao {
 
 struct AoKnobs {
     double radius = 0.6;   // ssao_knobs.h
+    double largeRadius = 2.0;  // the combined mode's large scale
     double intensity = 2.0;
     int samples = 16;
     double resolution = 0.25;  // AO computed at this fraction of the width and height (1, 0.5, 0.25)

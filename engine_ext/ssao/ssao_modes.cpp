@@ -6,9 +6,11 @@
 namespace obscura::ssao {
 
 const std::vector<std::string>& modeNames() {
-    static const std::vector<std::string> names = {"off", "crytek", "hemisphere", "cone", "horizon", "heightfield"};
+    static const std::vector<std::string> names = {"off", "crytek", "hemisphere", "cone", "horizon", "heightfield", "combined"};
     return names;
 }
+
+bool readsHeightMap(const std::string& mode) { return mode == "heightfield" || mode == "combined"; }
 
 bool isMode(const std::string& name) {
     const auto& m = modeNames();

@@ -9,6 +9,8 @@ namespace obscura::ssao {
 // "off", then one name per compositor in media/ssao/ssao.compositor.
 const std::vector<std::string>& modeNames();
 bool isMode(const std::string& name);
+// Whether the mode marches the level's top-down height map (the game bakes it for these).
+bool readsHeightMap(const std::string& mode);
 // The next (step +1) or previous (step -1) mode, wrapping around.
 std::string cycleMode(const std::string& current, int step);
 

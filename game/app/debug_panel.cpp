@@ -33,13 +33,15 @@ void DebugPanel::drawPlayer() const {
 
 void DebugPanel::drawAo() {
     ImGui::Text("mode: %s (O / Shift+O)", view_.aoStatus().c_str());
-    float radius = static_cast<float>(settings_.ssaoRadius), intensity = static_cast<float>(settings_.ssaoIntensity);
+    float radius = static_cast<float>(settings_.ssaoRadius), largeRadius = static_cast<float>(settings_.ssaoLargeRadius);
+    float intensity = static_cast<float>(settings_.ssaoIntensity);
     float exposure = static_cast<float>(settings_.exposure);
     // Ranges from the knob tables (ssao/ssao_knobs.h, frame/frame_knobs.h).
     const auto slider = [](const char* label, float* v, const Knob& k) {
         return ImGui::SliderFloat(label, v, static_cast<float>(k.min), static_cast<float>(k.max));
     };
     bool changed = slider("radius (m)", &radius, ssao::kRadius);
+    changed |= slider("large radius (m)", &largeRadius, ssao::kLargeRadius);
     changed |= slider("intensity", &intensity, ssao::kIntensity);
     changed |= ImGui::SliderInt("samples", &settings_.ssaoSamples, static_cast<int>(ssao::kSamples.min),
                                 static_cast<int>(ssao::kSamples.max));
@@ -47,6 +49,7 @@ void DebugPanel::drawAo() {
     changed |= slider("exposure", &exposure, frame::kExposure);
     if (changed) {
         settings_.ssaoRadius = radius;
+        settings_.ssaoLargeRadius = largeRadius;
         settings_.ssaoIntensity = intensity;
         settings_.exposure = exposure;
         aoChanged_();

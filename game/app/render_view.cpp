@@ -20,6 +20,7 @@
 #include "signs/sign_render.h"
 #include "smoke/smoke_render.h"
 #include "ssao/ssao_compositor.h"
+#include "ssao/ssao_modes.h"
 
 #include <Ogre.h>
 #include <algorithm>
@@ -48,7 +49,7 @@ Ogre::Radian verticalFov(double horizontalDegrees, double aspect) {
 }  // namespace
 
 RenderView::AoSettings RenderView::aoSettings(const Settings& s) {
-    return {s.ssao, s.ssaoRadius, s.ssaoIntensity, s.ssaoSamples, s.ssaoResolution, s.aoOnly, s.exposure};
+    return {s.ssao, s.ssaoRadius, s.ssaoLargeRadius, s.ssaoIntensity, s.ssaoSamples, s.ssaoResolution, s.aoOnly, s.exposure};
 }
 
 RenderView::RenderView(const Context& context, const Settings& settings, const Session& session)
@@ -197,6 +198,7 @@ void RenderView::setSigns(const std::string& mode, double haze) {
 void RenderView::applyAo(const AoSettings& a) {
     ssao::AoKnobs k;
     k.radius = a.radius;
+    k.largeRadius = a.largeRadius;
     k.intensity = a.intensity;
     k.samples = a.samples;
     k.resolution = a.resolution;
@@ -284,8 +286,8 @@ void RenderView::update(const Session& session, double alpha) {
 }
 
 void RenderView::rebakeHeightMapIfStale() {
-    // Only the heightfield mode reads the map; another mode bakes when it switches to it.
-    if (!heightMapStale_ || aoMode_ != "heightfield" || heightBounds_.isNull()) return;
+    // Only the height-map modes read the map; another mode bakes when it switches to one.
+    if (!heightMapStale_ || !ssao::readsHeightMap(aoMode_) || heightBounds_.isNull()) return;
     ao_->buildHeightMap(*scene_, heightBounds_, render::kSkyVisibilityFlag | render::kLiquidVisibilityFlag);
     bakedMoverOffsets_ = latestMoverOffsets_;
     heightMapStale_ = false;

@@ -46,7 +46,7 @@ public:
     // The AO settings the view shows (game/settings.h has their meaning and defaults).
     struct AoSettings {
         std::string mode;
-        double radius = 0, intensity = 0;
+        double radius = 0, largeRadius = 0, intensity = 0;
         int samples = 0;
         double resolution = 1;
         bool aoOnly = false;

@@ -5,23 +5,19 @@
 // rays from the surface point, cosine-weighted about its normal, are marched through it and a ray
 // is blocked where it passes under the height map. Points under a roof (the height map above them)
 // learn nothing from it and keep the small-scale term alone. Combined with the horizon mode by
-// taking the larger occlusion, so a crease both see is not darkened twice.
+// taking the larger occlusion, so a crease both see is not darkened twice. Kept beside the combined
+// mode, which fixes its faults, for comparison (engine_ext/ssao/README.md).
 in vec2 vUv;
 out vec4 fragColour;
 #include "ssao_common.glsl"
 #include "horizon.glsl"
-uniform sampler2D heightMap;     // world Y of the highest surface, metres; very low = nothing there
-uniform mat4 heightViewProj;     // world -> the height camera's clip space (x, z -> texture)
-uniform mat4 inverseView;        // view -> world
+#include "heightfield.glsl"
 uniform float heightRays;        // rays per pixel (the first entries of the hemisphere kernel)
 const int kHeightSteps = 8;      // steps a ray: the seed's ~8; more did not change the error table
-const float kRoofMargin = 0.3;   // metres: a height-map texel over the point this much higher is a roof
-
-float heightAt(vec3 world)
-{
-    vec4 clip = heightViewProj * vec4(world, 1.0);
-    return texture(heightMap, clip.xy * 0.5 + 0.5).r;
-}
+// metres: a height-map texel over the point this much higher is a roof. Tested at the point itself,
+// so a wall's face reads its own top as a roof (no large scale there) and a thin ceiling slab's
+// crease gets a black band: the combined mode (combined.frag) tests off the surface instead.
+const float kPointRoofMargin = 0.3;
 
 void main()
 {
@@ -33,7 +29,7 @@ void main()
 
     vec3 wp = (inverseView * vec4(p.xyz, 1.0)).xyz;
     vec3 wn = normalize(mat3(inverseView) * n);
-    if (heightAt(wp) < wp.y + kRoofMargin) {
+    if (heightAt(wp) < wp.y + kPointRoofMargin) {
         // Open sky above: march the rays. Start a little off the surface so it does not block itself.
         vec3 wr = normalize(mat3(inverseView) * rnd);
         vec3 t = normalize(wr - wn * dot(wr, wn));

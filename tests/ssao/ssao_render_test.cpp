@@ -1,40 +1,25 @@
 // The AO modes in the real game, headless: each mode darkens only ambient light (never brightens
 // a pixel, leaves the sky alone), the AO-only view shows occlusion where the courtyard's creases
 // are, and a GPU without a needed feature gets a clear message and the picture without AO.
-#include <gtest/gtest.h>
-
-#include "core/image.h"
-#include "run_process.h"
+#include "ssao_render_support.h"
 #include "ssao/ssao_modes.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
-namespace fs = std::filesystem;
-
 namespace {
+using obscura::ssao_test::luma;
 // The courtyard's east end: pillars, the low wall, the ramp, the tall wall; sky at the top.
 const char* const kView = "--start-pose '26 1.65 -24 -30 -10'";
 // Looking up past the tall east wall: the upper third of the frame is sky.
 const char* const kSkyView = "--start-pose '26 1.65 -24 -30 30'";
 
 obscura::testing_support::ProcessResult game(const std::string& args, const char* view = kView) {
-    return obscura::testing_support::runProcess(std::string("'" OBSCURA_GAME "' --headless --ticks 1 --width 320 "
-                                                            "--height 180 --hud off ") + view + " " + args + " 2>&1");
+    return obscura::ssao_test::game(std::string(view) + " " + args);
 }
-
-std::string shot(const std::string& name) { return (fs::path(testing::TempDir()) / ("ssao_" + name + ".png")).string(); }
-
+using obscura::ssao_test::shot;
 obscura::Image render(const std::string& name, const std::string& args, const char* view = kView) {
-    const auto r = game(args + " --screenshot " + shot(name), view);
-    EXPECT_EQ(r.code, 0) << r.out;
-    return obscura::readPng(shot(name));
-}
-
-int luma(const obscura::Image& im, std::size_t pixel) {
-    const auto* p = &im.rgba[pixel * 4];
-    return (2126 * p[0] + 7152 * p[1] + 722 * p[2]) / 10000;
+    return obscura::ssao_test::render(name, std::string(view) + " " + args);
 }
 }  // namespace
 
@@ -67,7 +52,7 @@ TEST(SsaoRender, EveryModeOnlyTakesLightAwayAndSomewhere) {
 }
 
 TEST(SsaoRender, AoOnlyViewShowsTheCreasesNotAFlatImage) {
-    for (const std::string mode : {"hemisphere", "horizon", "heightfield"}) {
+    for (const std::string mode : {"hemisphere", "horizon", "heightfield", "combined"}) {
         const obscura::Image ao = render(mode + "_ao", "--ssao " + mode + " --ao-only");
         std::size_t white = 0, dark = 0;
         for (std::size_t i = 0; i < ao.rgba.size() / 4; ++i) {
