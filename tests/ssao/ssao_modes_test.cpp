@@ -17,4 +17,12 @@ TEST(SsaoModes, CycleForwardAndBackWraps) {
     EXPECT_TRUE(isMode("hemisphere"));
     EXPECT_TRUE(isMode("heightfield"));
     EXPECT_FALSE(isMode("Hemisphere"));
+    EXPECT_EQ(m.back(), "combined");  // appended: the cycle's older order is kept
+}
+
+TEST(SsaoModes, TheHeightMapModesAreNamed) {
+    EXPECT_TRUE(readsHeightMap("heightfield"));
+    EXPECT_TRUE(readsHeightMap("combined"));
+    EXPECT_FALSE(readsHeightMap("horizon"));
+    EXPECT_FALSE(readsHeightMap("off"));
 }
