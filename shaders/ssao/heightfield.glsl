@@ -25,6 +25,8 @@ const float kRayLift = 0.1;
 // the point. Small: measured at the offset point, open ground and walls read at most a texel's
 // quantisation above it; any more left a band along the wall-ceiling crease of a thin ceiling slab.
 const float kRoofMargin = 0.05;
+// Metres: below this the map holds "nothing here" (ssao_compositor.cpp's kNoHeight, -1e4).
+const float kNothingBelow = -1e3;
 const int kLargeSteps = 8;       // steps a ray: the seed's ~8 (a step of 0.2 m over 0.6..2 m)
 
 // The rays' per-pixel turn and step offset, in [0, 1): a 5x5 interleaved pattern in which any 5
@@ -41,13 +43,16 @@ vec2 rayPattern(vec2 pixel)
 
 // Visibility (1 = open) of world point wp with world normal wn through what the height map holds
 // between `inner` and `outer` metres from it, -1 where the map says nothing: under a roof (the map
-// over the point holds the roof's top, and says nothing about what lies between the roof and it).
+// over the point holds the roof's top, and says nothing about what lies between the roof and it),
+// or where it holds nothing at all (no map baked, or a model's surface the map leaves out: Sibenik
+// is one model, and every ray would have gone unblocked).
 // `rays` rays, cosine-weighted about the normal (a Fibonacci spiral on the unit disc lifted to the
 // hemisphere: each ray weighs the same), the spiral turned per pixel by rayPattern.
 float heightVisibility(vec3 wp, vec3 wn, float inner, float outer, int rays)
 {
     vec3 o = wp + wn * kRoofTestOffset;
-    if (heightAt(o) > o.y + kRoofMargin) return -1.0;
+    float over = heightAt(o);
+    if (over > o.y + kRoofMargin || over < kNothingBelow) return -1.0;
     vec3 start = wp + wn * kRayLift;
     vec3 a = abs(wn.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
     vec3 t = normalize(cross(a, wn));
