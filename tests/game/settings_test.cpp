@@ -125,6 +125,12 @@ TEST(Settings, AoModeIsValidatedAndCycles) {
     EXPECT_EQ(s.ssao, "crytek");
     EXPECT_DOUBLE_EQ(s.ssaoRadius, 0.8);
     EXPECT_EQ(s.ssaoSamples, 32);
+    EXPECT_DOUBLE_EQ(s.ssaoLargeRadius, 2.0);  // the combined mode's large scale: its own knob
+    ASSERT_TRUE(parseArgs({"--ssao", "combined", "--ssao-large-radius", "4"}, s));
+    EXPECT_EQ(s.ssao, "combined");
+    EXPECT_DOUBLE_EQ(s.ssaoLargeRadius, 4.0);
+    EXPECT_DOUBLE_EQ(s.ssaoRadius, 0.8);  // untouched by it
+    EXPECT_NE(errorOf({"--ssao-large-radius", "20"}).find("out of range"), std::string::npos);
     EXPECT_EQ(errorOf({"--ssao-samples", "64"}), "command line: setting 'ssao-samples': '64' is out of range, expected 1 to 32");
     EXPECT_NE(errorOf({"--ssao", "hbao++"}).find("unknown mode 'hbao++', expected one of off, crytek, hemisphere, cone, horizon"),
               std::string::npos);
