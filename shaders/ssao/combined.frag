@@ -5,7 +5,8 @@
 // the screen and behind the camera. The two count disjoint distance ranges and their visibilities
 // multiply: V = V_small(0..r) x V_large(r..R), so an occluder both could see is counted once (as
 // max() of two estimates of overlapping ranges did not: it kept the larger error of the two).
-// Under a roof the map says nothing; there the large scale is the screen's horizon over r..R.
+// Under a roof the map says nothing; there the large scale is the screen's horizon's visibility
+// beyond r (screenVisibilityBeyond).
 in vec2 vUv;
 out vec4 fragColour;
 #include "ssao_common.glsl"
@@ -16,6 +17,18 @@ uniform float heightRays;        // rays per pixel through the height map
 
 // The small scale: the one screen-space mode this mode is built on.
 float smallOcclusion(vec4 p, vec3 n, vec3 rnd) { return horizonOcclusion(p, n, rnd); }
+
+// Under a roof: the screen's visibility beyond the radius, as the horizon measures it: V(0..R) /
+// V(0..r), the share of what is open to r that stays open to R. Horizons do not add up over
+// ranges (a ceiling seen within r and beyond it is one horizon, the higher one), so the product
+// with a horizon over r..R alone darkened a wall-ceiling crease twice (0.17 against the 2 m
+// truth's 0.5 on tests/ssao's room).
+float screenVisibilityBeyond(vec4 p, vec3 n, vec3 rnd)
+{
+    float toLarge = 1.0 - clamp(horizonOcclusionBetween(p, n, rnd, 0.0, largeRadius), 0.0, 1.0);
+    float toSmall = 1.0 - clamp(horizonOcclusionBetween(p, n, rnd, 0.0, radius), 0.0, 1.0);
+    return clamp(toLarge / max(toSmall, 1e-3), 0.0, 1.0);
+}
 
 void main()
 {
@@ -29,7 +42,7 @@ void main()
         vec3 wp = (inverseView * vec4(p.xyz, 1.0)).xyz;
         vec3 wn = normalize(mat3(inverseView) * n);
         large = heightVisibility(wp, wn, radius, largeRadius, int(heightRays));
-        if (large < 0.0) large = 1.0 - clamp(horizonOcclusionBetween(p, n, rnd, radius, largeRadius), 0.0, 1.0);
+        if (large < 0.0) large = screenVisibilityBeyond(p, n, rnd);
     }
     fragColour = aoResult(small * large, -p.z);
 }

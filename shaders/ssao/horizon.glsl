@@ -35,9 +35,9 @@ float horizonOcclusionBetween(vec4 p, vec3 n, vec3 rnd, float inner, float outer
             // sin(elevation) above the tangent plane, less a small bias against flat-surface noise
             float elevation = dot(h / dist, n) - 0.1;
             // Faded over the range: 1 at `inner`, 0 at `outer` (for the small scale, inner = 0:
-            // 1 - dist^2 / radius^2, HBAO's own).
-            float t = (dist - inner) / (outer - inner);
-            float falloff = clamp(1.0 - t * t, 0.0, 1.0);
+            // 1 - dist^2 / radius^2, HBAO's own, the same operations as before the range).
+            float near = dist - inner, span = outer - inner;
+            float falloff = clamp(1.0 - (near * near) / (span * span), 0.0, 1.0);
             best = max(best, elevation * falloff);
         }
         occ += best;
