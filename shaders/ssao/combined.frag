@@ -25,8 +25,8 @@ float smallOcclusion(vec4 p, vec3 n, vec3 rnd) { return horizonOcclusion(p, n, r
 // truth's 0.5 on tests/ssao's room).
 float screenVisibilityBeyond(vec4 p, vec3 n, vec3 rnd)
 {
-    float toLarge = 1.0 - clamp(horizonOcclusionBetween(p, n, rnd, 0.0, largeRadius), 0.0, 1.0);
-    float toSmall = 1.0 - clamp(horizonOcclusionBetween(p, n, rnd, 0.0, radius), 0.0, 1.0);
+    float toLarge = 1.0 - clamp(horizonOcclusionWithin(p, n, rnd, largeRadius), 0.0, 1.0);
+    float toSmall = 1.0 - clamp(horizonOcclusionWithin(p, n, rnd, radius), 0.0, 1.0);
     return clamp(toLarge / max(toSmall, 1e-3), 0.0, 1.0);
 }
 

@@ -6,14 +6,12 @@
 // Needs ssao_common.glsl.
 const int kHorizonDirections = 4;  // x steps = the sample count (16 -> 4 steps a direction)
 
-// Occlusion (0 = open, 1 = closed) of view-space point p with normal n by what lies between
-// `inner` and `outer` metres from it (the combined mode's large-scale fallback counts only what the
-// small scale, 0..radius, does not), faded to nothing at `outer`.
-float horizonOcclusionBetween(vec4 p, vec3 n, vec3 rnd, float inner, float outer)
+// Occlusion (0 = open, 1 = closed) of view-space point p with normal n by what lies within `reach`
+// metres of it (the radius for the small scale; combined.frag also asks for its large radius).
+float horizonOcclusionWithin(vec4 p, vec3 n, vec3 rnd, float reach)
 {
-    // The range projected to texture space at this depth.
-    vec2 innerUv = 0.5 * projScale * inner / -p.z;
-    vec2 outerUv = 0.5 * projScale * outer / -p.z;
+    // The reach projected to texture space at this depth.
+    vec2 reachUv = 0.5 * projScale * reach / -p.z;
     int steps = max(int(sampleCount) / kHorizonDirections, 1);
     // The per-pixel random vector's xy is the first direction; the others are it turned by 90
     // degrees each (no trigonometry per pixel).
@@ -25,19 +23,16 @@ float horizonOcclusionBetween(vec4 p, vec3 n, vec3 rnd, float inner, float outer
         float best = 0.0;
         for (int s = 0; s < 8; ++s) {
             if (s >= steps) break;
-            vec2 uv = vUv + dir * (innerUv + (outerUv - innerUv) * ((float(s) + jitter) / float(steps)));
+            vec2 uv = vUv + dir * reachUv * ((float(s) + jitter) / float(steps));
             if (!onScreen(uv)) break;
             vec4 q = viewPosition(uv);
             if (q.w < 0.5) continue;
             vec3 h = q.xyz - p.xyz;
             float dist = length(h);
-            if (dist < max(inner, 1e-4)) continue;
+            if (dist < 1e-4) continue;
             // sin(elevation) above the tangent plane, less a small bias against flat-surface noise
             float elevation = dot(h / dist, n) - 0.1;
-            // Faded over the range: 1 at `inner`, 0 at `outer` (for the small scale, inner = 0:
-            // 1 - dist^2 / radius^2, HBAO's own, the same operations as before the range).
-            float near = dist - inner, span = outer - inner;
-            float falloff = clamp(1.0 - (near * near) / (span * span), 0.0, 1.0);
+            float falloff = clamp(1.0 - (dist * dist) / (reach * reach), 0.0, 1.0);
             best = max(best, elevation * falloff);
         }
         occ += best;
@@ -46,4 +41,4 @@ float horizonOcclusionBetween(vec4 p, vec3 n, vec3 rnd, float inner, float outer
 }
 
 // The small scale: everything within the radius.
-float horizonOcclusion(vec4 p, vec3 n, vec3 rnd) { return horizonOcclusionBetween(p, n, rnd, 0.0, radius); }
+float horizonOcclusion(vec4 p, vec3 n, vec3 rnd) { return horizonOcclusionWithin(p, n, rnd, radius); }
