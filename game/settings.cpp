@@ -7,7 +7,7 @@
 #include "frame/frame_knobs.h"
 #include "ssao/ssao_knobs.h"
 #include "ssao/ssao_modes.h"
-#include "ao_truth/truth_compare.h"
+#include "ao_truth/truth_show.h"
 
 #include <boost/program_options.hpp>
 
