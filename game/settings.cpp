@@ -7,7 +7,7 @@
 #include "frame/frame_knobs.h"
 #include "ssao/ssao_knobs.h"
 #include "ssao/ssao_modes.h"
-#include "ao_truth/truth_compare.h"
+#include "ao_truth/truth_show.h"
 
 #include <boost/program_options.hpp>
 
@@ -258,7 +258,7 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
            num(&S::debugDecalsCone, "debug-decals-cone", 0, 90)});
     I.add({"mouse-sensitivity", "mouse sensitivity, 0.01 to 20 (1 = 0.022 degrees per count)", num(&S::mouseSensitivity, "mouse-sensitivity", 0.01, 20)});
     I.add({"invert-mouse", "invert vertical mouse look", flag(&S::invertMouse, "invert-mouse"), true});
-    I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield, combined (O cycles them)", [](S& s, W v, W where) {
+    I.add({"ssao", "ambient-occlusion mode: off, crytek, hemisphere, cone, horizon, heightfield, gtao, combined (O cycles them)", [](S& s, W v, W where) {
                if (!ssao::isMode(v)) {
                    std::string all;
                    for (const auto& m : ssao::modeNames()) all += (all.empty() ? "" : ", ") + m;

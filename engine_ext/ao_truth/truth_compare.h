@@ -3,6 +3,7 @@
 // beside `off`'s), the heat map of mode - truth, and the HUD's lines.
 #pragma once
 
+#include "ao_truth/truth_show.h"
 #include "aoref/ao_compare.h"
 #include "ssao/ao_reference.h"
 
@@ -13,14 +14,6 @@
 #include <vector>
 
 namespace obscura::ao_truth {
-
-// What the truth key shows over the frame: nothing, the reference, the active mode's AO alone
-// (its AO buffer, as scored), or the heat map. The key cycles them in this order.
-enum class Show { Off, Reference, Mode, HeatMap };
-const std::vector<std::string>& showNames();  // "off", "reference", "mode", "heatmap"
-std::optional<Show> showFromName(const std::string& name);
-const std::string& showName(Show s);
-Show nextShow(Show s);
 
 struct Score {
     aoref::AoError mode, off;  // the active mode's AO and an all-white frame, against the reference

@@ -352,6 +352,11 @@ void Frame::renderPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat) {
     bind(e, passId, *pass, set);
 }
 
+void Frame::setAmbientAreas(std::vector<AmbientBox> areas) {
+    if (areas.size() > FRAME_MAX_AMBIENT_AREAS) areas.resize(FRAME_MAX_AMBIENT_AREAS);
+    ambientAreas_ = std::move(areas);
+}
+
 void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
     if (passId == kVolumesPass) {
         // The shared volumetric pass: the camera, for whichever techniques march in it.
@@ -364,6 +369,21 @@ void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
     if (!e.techniques.empty()) return;
     if (passId == kLightingPass) {
         u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
+        // The ambient areas, tested at each pixel's world position.
+        const Ogre::Matrix4& proj = camera_.getProjectionMatrix();
+        u.set("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
+        u.set("flipY", context_.flipY ? 1.0f : 0.0f);
+        u.set("inverseView", camera_.getViewMatrix().inverse());
+        float mins[FRAME_MAX_AMBIENT_AREAS * 4] = {}, maxs[FRAME_MAX_AMBIENT_AREAS * 4] = {};
+        for (std::size_t i = 0; i < ambientAreas_.size(); ++i) {
+            const AmbientBox& a = ambientAreas_[i];
+            for (int c = 0; c < 3; ++c) mins[i * 4 + c] = a.min[c], maxs[i * 4 + c] = a.max[c];
+            mins[i * 4 + 3] = a.scale;
+            maxs[i * 4 + 3] = a.blend;
+        }
+        u.set("ambientAreaCount", static_cast<float>(ambientAreas_.size()));
+        u.setArray("ambientAreaMin", mins, FRAME_MAX_AMBIENT_AREAS, 4);
+        u.setArray("ambientAreaMax", maxs, FRAME_MAX_AMBIENT_AREAS, 4);
         u.set("exposure", settings_.exposure);  // undoes the tone map for the sky
         u.set("view", camera_.getViewMatrix(true));  // the G-buffer's view normals back to the world (decals' normals)
     } else if (passId == kOutputPass) {

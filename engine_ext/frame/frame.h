@@ -14,6 +14,7 @@
 #include "frame/technique.h"
 
 #include <OgreMaterialManager.h>
+#include <OgreVector.h>
 #include <OgreRenderQueue.h>
 #include <OgreTexture.h>
 
@@ -43,6 +44,13 @@ struct FrameSettings {
 };
 
 
+// A box in which the lighting pass scales the ambient light (a level's env_ambient: map::AmbientArea).
+struct AmbientBox {
+    Ogre::Vector3 min, max;  // world
+    float scale = 1;         // the ambient times this inside
+    float blend = 0;         // metres across the faces, centred on them; 0 = a hard edge
+};
+
 class Frame : public Ogre::MaterialManager::Listener {
 public:
     Frame(Ogre::Viewport& viewport, Ogre::Camera& camera, FrameSettings settings);
@@ -53,6 +61,9 @@ public:
     // A technique the game made (not owned; it must outlive the frame).
     void add(Technique& technique);
     void setExposure(float exposure) { settings_.exposure = exposure; }
+    // The boxes the ambient is scaled in, at most FRAME_MAX_AMBIENT_AREAS (frame_shared.h): the
+    // rest are dropped (the caller warns).
+    void setAmbientAreas(std::vector<AmbientBox> areas);
     // A scene material drawn after lighting that reads the frame's buffers (liquids read the
     // G-buffer's depth: they test against it in their shader, the depth buffer of `lit` not being
     // the G-buffer's on every driver): its texture units named like a published buffer
@@ -95,6 +106,7 @@ private:
     Ogre::Viewport& viewport_;
     Ogre::Camera& camera_;
     FrameSettings settings_;
+    std::vector<AmbientBox> ambientAreas_;
     Gpu gpu_;
     std::string view_ = "scene";
     std::vector<std::unique_ptr<Technique>> own_;  // the frame's debug techniques (gbuffer_view)

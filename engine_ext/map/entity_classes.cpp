@@ -224,6 +224,14 @@ std::vector<EntityClass> makeClasses() {
                  {key("target", T::TargetDestination, "", "First path_corner"), key("speed", T::Float, "100", "Units a second"),
                   key("dmg", T::Integer, "2", "Damage when blocked"), sounds("0", {{"0", "None"}, {"1", "Ratchet metal"}})},
                  "", ""});
+    // Obscura's lighting volumes (map/map_lights.h: Level::ambientAreas).
+    c.push_back({"env_ambient", EntityKind::Brush, R::Game, BrushRole::Volume,
+                 "Scales the level's ambient light inside its brushes' box (an enclosed room the sky does not reach); "
+                 "invisible and not solid. Draw it over the room's inner faces",
+                 {},
+                 {key("ambient", T::Float, "0.1", "The level's ambient light times this inside the box (0 to 1)"),
+                  key("blend", T::Float, "0", "Metres over which it fades across the box's faces, centred on them (0 = a hard edge; up to 4)")},
+                 "", ""});
     // Triggers: invisible, non-solid volumes the player fires (game/sim/triggers.h).
     c.push_back({"trigger_multiple", EntityKind::Brush, R::Trigger, BrushRole::Volume, "Fires its target each time it is entered",
                  {"Targetname", "Target", "Trigger"}, {key("wait", T::Float, "0.2", "Seconds before it can fire again")}, "", ""});

@@ -146,6 +146,16 @@ struct LevelLightingKeys {
     Vec3 domeColour{1, 1, 1}, domeBelowColour{1, 1, 1};
 };
 
+// An `env_ambient` brush entity (map_lights.cpp): inside its brushes' box the level's ambient light
+// is scaled by `scale` (an enclosed room keeps the sky's light out); the lighting pass applies it
+// per pixel (render/ambient_area.h: ambientScaleAt).
+struct AmbientArea {
+    Aabb box;           // metres, world
+    double scale = 0.1; // `ambient`
+    double blend = 0;   // `blend`, metres: the fade across the faces, centred on them
+    SourcePos pos;
+};
+
 struct LevelModel {
     std::string mesh;  // OGRE .mesh name or path from the `model` key
     Vec3 origin;
@@ -162,6 +172,7 @@ struct Level {
     std::vector<LevelBrush> brushes;
     std::vector<LevelLight> lights;
     LevelLightingKeys lighting;
+    std::vector<AmbientArea> ambientAreas;  // env_ambient, in file order
     std::vector<LevelModel> models;  // misc_model
     Vec3 playerStart;
     double playerStartYaw = 0;

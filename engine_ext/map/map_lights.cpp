@@ -6,6 +6,7 @@
 #include "map/map_compile.h"
 #include "map/quake_light.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -142,8 +143,42 @@ void readWorldspawn(const LevelEntity& world, const Keys& k, LevelLightingKeys& 
 }
 }  // namespace
 
+double ambientScaleAt(const std::vector<AmbientArea>& areas, const Vec3& p) {
+    double factor = 1;
+    for (const AmbientArea& a : areas) {
+        // The signed distance inside the box along the nearest face (negative outside it).
+        const double inside = std::min({p.x - a.box.min.x, a.box.max.x - p.x, p.y - a.box.min.y, a.box.max.y - p.y,
+                                        p.z - a.box.min.z, a.box.max.z - p.z}) + kAmbientAreaGrace;
+        const double w = a.blend > 0 ? std::clamp(0.5 + inside / a.blend, 0.0, 1.0) : (inside >= 0 ? 1.0 : 0.0);
+        factor = std::min(factor, 1 + (a.scale - 1) * w);
+    }
+    return factor;
+}
+
+namespace {
+void readAmbientAreas(Level& level, const std::string& path, std::vector<std::string>* warnings) {
+    for (std::size_t ei = 0; ei < level.entities.size(); ++ei) {
+        const LevelEntity& e = level.entities[ei];
+        if (e.classname != "env_ambient") continue;
+        const Keys k(e, path, warnings);
+        AmbientArea a;
+        a.pos = e.pos;
+        for (const LevelBrush& b : level.brushes)
+            if (b.entityIndex == static_cast<int>(ei)) a.box.extend(b.bounds.min), a.box.extend(b.bounds.max);
+        if (a.box.empty()) {
+            k.warn("env_ambient has no brushes; skipped");
+            continue;
+        }
+        a.scale = k.number({"ambient"}, 0.1, 0, 1);
+        a.blend = k.number({"blend"}, 0, 0, 4);
+        level.ambientAreas.push_back(a);
+    }
+}
+}  // namespace
+
 void compileLights(Level& level, const std::string& path, std::vector<std::string>* warnings) {
     if (level.entities.empty()) return;
+    readAmbientAreas(level, path, warnings);
     const LevelEntity& world = level.entities.front();
     const Keys worldKeys(world, path, warnings);
     readWorldspawn(world, worldKeys, level.lighting);

@@ -27,7 +27,7 @@ const char* const kShadowScheme = "SignShadow";
 // The lamp's shadow map: 512 texels across the plate's rectangle, a texel ~2 cm at 10 m behind a
 // 1 m plate 0.3 m from its lamp (the pillar's edge in the shafts is that sharp); drawn every frame
 // (props, doors and the player move), ~1/4 of the G-buffer's pixels at 720p.
-constexpr unsigned kShadowSize = 512;
+constexpr unsigned kShadowSize = SIGN_SHADOW_SIZE;
 
 Ogre::Vector3 ogre(const Vec3& v) {
     return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
@@ -279,7 +279,7 @@ void SignRender::bindSigns(Ogre::Pass& pass, frame::Uniforms& u) const {
     float centre[SIGN_MAX_LIGHTS * 3] = {}, right[SIGN_MAX_LIGHTS * 3] = {}, up[SIGN_MAX_LIGHTS * 3] = {},
           facing[SIGN_MAX_LIGHTS * 3] = {}, plate[SIGN_MAX_LIGHTS * 4] = {}, lamp[SIGN_MAX_LIGHTS * 4] = {},
           colour[SIGN_MAX_LIGHTS * 4] = {}, cone[SIGN_MAX_LIGHTS * 4] = {}, holes[SIGN_HOLE_SLOTS * 4] = {};
-    float shadow[SIGN_MAX_LIGHTS * 16] = {};
+    float shadow[SIGN_MAX_LIGHTS * 16] = {}, maskSize[SIGN_MAX_LIGHTS * 2] = {};
     const auto put3 = [](float* out, const Vec3& v) {
         out[0] = static_cast<float>(v.x), out[1] = static_cast<float>(v.y), out[2] = static_cast<float>(v.z);
     };
@@ -299,6 +299,8 @@ void SignRender::bindSigns(Ogre::Pass& pass, frame::Uniforms& u) const {
         plate[k * 4 + 1] = static_cast<float>(m.halfHeight);
         plate[k * 4 + 2] = static_cast<float>(holes_[chosen_[k]].size());
         plate[k * 4 + 3] = static_cast<float>(m.texel);
+        maskSize[k * 2 + 0] = static_cast<float>(m.width);
+        maskSize[k * 2 + 1] = static_cast<float>(m.height);
         put3(lamp + k * 4, s.lamp);
         lamp[k * 4 + 3] = static_cast<float>(s.lightRadius);
         put3(colour + k * 4, s.lightColour * s.intensity);
@@ -321,6 +323,7 @@ void SignRender::bindSigns(Ogre::Pass& pass, frame::Uniforms& u) const {
     u.setArray("signUp", up, SIGN_MAX_LIGHTS, 3);
     u.setArray("signFacing", facing, SIGN_MAX_LIGHTS, 3);
     u.setArray("signPlate", plate, SIGN_MAX_LIGHTS, 4);
+    u.setArray("signMaskSize", maskSize, SIGN_MAX_LIGHTS, 2);
     u.setArray("signLamp", lamp, SIGN_MAX_LIGHTS, 4);
     u.setArray("signColour", colour, SIGN_MAX_LIGHTS, 4);
     u.setArray("signCone", cone, SIGN_MAX_LIGHTS, 4);

@@ -174,6 +174,9 @@ void AmbientOcclusion::bind(Ogre::uint32 passId, Ogre::Pass&, frame::Uniforms& u
         // Sphere kernels for the depth-only and cone modes, hemispheres for the normal-oriented ones.
         const auto& kernels = mode_ == "crytek" || mode_ == "cone" ? sphereKernels_ : hemisphereKernels_;
         u.setArray("kernel", kernels[static_cast<std::size_t>(samples - 1)].data(), SSAO_MAX_SAMPLES, 3);
+        // GTAO's visibility is already the cosine-weighted integral: the default intensity leaves it
+        // as it is, others raise it to a power (intensity 4 squares it, 1 takes its square root).
+        if (mode_ == "gtao") u.set("visibilityPower", static_cast<float>(kIntensity.clamp(knobs_.intensity) / kIntensity.value));
         if (readsHeightMap(mode_)) {
             u.set("inverseView", ctx.camera->getViewMatrix().inverse());
             u.set("heightViewProj", heightViewProj_);

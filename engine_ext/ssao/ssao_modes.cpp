@@ -6,7 +6,7 @@
 namespace obscura::ssao {
 
 const std::vector<std::string>& modeNames() {
-    static const std::vector<std::string> names = {"off", "crytek", "hemisphere", "cone", "horizon", "heightfield", "combined"};
+    static const std::vector<std::string> names = {"off", "crytek", "hemisphere", "cone", "horizon", "heightfield", "gtao", "combined"};
     return names;
 }
 

@@ -3,6 +3,7 @@
 
 #include "app/combat_view.h"
 #include "app/truth_key.h"
+#include "map/map_lights.h"
 #include "raytrace/level_triangles.h"
 #include "render/hud.h"
 #include "render/level_geometry.h"
@@ -39,6 +40,24 @@
 namespace obscura {
 
 namespace {
+
+static_assert(map::kAmbientAreaGrace == FRAME_AMBIENT_AREA_GRACE, "the C++ and GLSL ambient areas agree");
+
+// The level's env_ambient areas as the frame takes them; past FRAME_MAX_AMBIENT_AREAS a line names
+// the first one dropped.
+std::vector<frame::AmbientBox> ambientBoxes(const map::Level& level, const std::string& path) {
+    std::vector<frame::AmbientBox> out;
+    for (const map::AmbientArea& a : level.ambientAreas) {
+        if (out.size() == FRAME_MAX_AMBIENT_AREAS) {
+            std::cerr << "obscura: " << path << ":" << a.pos.line << ": env_ambient: the level has "
+                      << level.ambientAreas.size() << " of them; only the first " << FRAME_MAX_AMBIENT_AREAS
+                      << " are drawn (this one and the rest are not)\n";
+            break;
+        }
+        out.push_back({render::toOgre(a.box.min), render::toOgre(a.box.max), static_cast<float>(a.scale), static_cast<float>(a.blend)});
+    }
+    return out;
+}
 constexpr double kPi = 3.14159265358979323846;
 double degToRad(double d) { return d * kPi / 180.0; }
 
@@ -106,6 +125,7 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     fs.maxRenderTargets = settings.debugMaxRenderTargets;
     fs.unsupportedFormats = settings.debugUnsupportedFormats;
     frame_ = std::make_unique<frame::Frame>(*viewport_, *camera_, fs);
+    frame_->setAmbientAreas(ambientBoxes(level, settings.level));
     for (const auto& m : materials_->liquidMaterials()) frame_->addSceneMaterial(m);  // they read gbufferDepth
     ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
     smoke_ = std::make_unique<smoke::SmokeRender>();

@@ -29,6 +29,12 @@
 // silhouette among its four texels): 2 cm at 1 m, 20 cm at 10 m.
 #define FRAME_SAME_SURFACE 0.02
 
+// The level's env_ambient areas the lighting pass scales the ambient in (Frame::setAmbientAreas;
+// map_lights.h ambientScaleAt): 8, a box test each per pixel; a level with more warns at load.
+#define FRAME_MAX_AMBIENT_AREAS 8
+// A point this far outside an area's face counts as on it (map::kAmbientAreaGrace).
+#define FRAME_AMBIENT_AREA_GRACE 0.02
+
 // Resolutions of the frame's own buffers that techniques' passes read: the volumetrics' light and
 // transmittance are marched at half the width and height (a full-resolution march cost ~4x on
 // llvmpipe for no visible gain on smooth smoke).

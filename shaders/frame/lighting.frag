@@ -21,8 +21,29 @@ uniform float aoPresent;        // 0: no AO stage runs, AO is 1 everywhere
 uniform vec3 skyAmbient;        // linear RGB, light arriving from above (ObscuraLighting)
 uniform vec3 groundAmbient;     // linear RGB, light bounced from below
 uniform float exposure;         // the output's, to undo the tone map for the sky
+uniform vec2 projScale;         // projection matrix [0][0] and [1][1] (set by the frame)
+uniform float flipY;            // 1 when render textures are stored upside down
+uniform mat4 inverseView;       // view -> world
+uniform float ambientAreaCount; // the level's env_ambient boxes (Frame::setAmbientAreas)
+uniform vec4 ambientAreaMin[FRAME_MAX_AMBIENT_AREAS];  // xyz the box's low corner (world), w its ambient scale
+uniform vec4 ambientAreaMax[FRAME_MAX_AMBIENT_AREAS];  // xyz the high corner, w the blend across its faces (m)
 in vec2 vUv;
 out vec4 fragColour;
+
+// map_lights.cpp's ambientScaleAt: the ambient's factor at world point p (1 outside every area).
+float ambientScaleAt(vec3 p)
+{
+    float factor = 1.0;
+    for (int i = 0; i < FRAME_MAX_AMBIENT_AREAS; ++i) {
+        if (float(i) >= ambientAreaCount) break;
+        vec3 lo = p - ambientAreaMin[i].xyz, hi = ambientAreaMax[i].xyz - p;
+        float inside = min(min(min(lo.x, hi.x), min(lo.y, hi.y)), min(lo.z, hi.z)) + FRAME_AMBIENT_AREA_GRACE;
+        float blend = ambientAreaMax[i].w;
+        float w = blend > 0.0 ? clamp(0.5 + inside / blend, 0.0, 1.0) : (inside >= 0.0 ? 1.0 : 0.0);
+        factor = min(factor, 1.0 + (ambientAreaMin[i].w - 1.0) * w);
+    }
+    return factor;
+}
 
 void main()
 {
@@ -60,5 +81,10 @@ void main()
         skyward = 0.5 + 0.5 * nBent.y;
     }
     vec3 ambient = mix(groundAmbient, skyAmbient, skyward);
+    if (ambientAreaCount > 0.5) {
+        vec2 ndc = vec2(vUv.x, flipY > 0.5 ? 1.0 - vUv.y : vUv.y) * 2.0 - 1.0;
+        vec3 world = (inverseView * vec4(vec3(ndc / projScale, -1.0) * depth, 1.0)).xyz;
+        ambient *= ambientScaleAt(world);
+    }
     fragColour = vec4(albedo * (direct + ambient * ao), 1.0);
 }

@@ -12,6 +12,7 @@ uniform vec3 signRight[SIGN_MAX_LIGHTS];        // the plate's axes (orthonormal
 uniform vec3 signUp[SIGN_MAX_LIGHTS];
 uniform vec3 signFacing[SIGN_MAX_LIGHTS];       // towards the room: the light travels along it
 uniform vec4 signPlate[SIGN_MAX_LIGHTS];        // half width, half height (m), holes in use, the mask's texel (m)
+uniform vec2 signMaskSize[SIGN_MAX_LIGHTS];     // the mask's texels across and down (no textureSize a sample)
 uniform vec4 signLamp[SIGN_MAX_LIGHTS];         // the lamp's centre (world), w = its radius (m)
 uniform vec4 signColour[SIGN_MAX_LIGHTS];       // linear colour x intensity, w = range (m)
 uniform vec4 signCone[SIGN_MAX_LIGHTS];         // cos(cone), cos(0.85 cone)
@@ -30,7 +31,7 @@ const float kSignPi = 3.14159265358979;
 // the one 2x2 neighbourhood of texels: sign_light.cpp's SignMask::at with its gradient.
 vec3 signMaskAt(int i, vec2 xy)
 {
-    ivec2 size = i == 0 ? textureSize(signMask0, 0) : textureSize(signMask1, 0);
+    ivec2 size = ivec2(signMaskSize[i]);
     float texel = signPlate[i].w;
     vec2 raw = vec2((xy.x + signPlate[i].x) / texel - 0.5, (signPlate[i].y - xy.y) / texel - 0.5);
     vec2 uv = clamp(raw, vec2(0.0), vec2(size - 1));
@@ -57,7 +58,8 @@ float signShadowAt(int i, vec3 p, float toLamp)
     if (clip.w <= 0.0) return 1.0;
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
-    float stored = i == 0 ? texture(signShadow0, uv).r : texture(signShadow1, uv).r;
+    ivec2 texel = min(ivec2(uv * float(SIGN_SHADOW_SIZE)), ivec2(SIGN_SHADOW_SIZE - 1));
+    float stored = i == 0 ? texelFetch(signShadow0, texel, 0).r : texelFetch(signShadow1, texel, 0).r;
     return stored <= 0.0 || toLamp <= stored + kSignShadowBias ? 1.0 : 0.0;
 }
 

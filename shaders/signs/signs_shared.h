@@ -14,4 +14,8 @@
 // one number or macro, not an expression (sign_render.cpp checks the product).
 #define SIGN_HOLE_SLOTS 32
 
+// A lit sign's shadow map, texels a side (engine_ext/signs/sign_render.cpp says why 512); the
+// shader reads it with texelFetch (the same texel as nearest filtering, cheaper on llvmpipe).
+#define SIGN_SHADOW_SIZE 512
+
 #endif

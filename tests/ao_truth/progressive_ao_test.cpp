@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "ao_truth/progressive_ao.h"
+#include "floor_and_wall.h"
 
 #include <chrono>
 #include <cmath>
@@ -11,18 +12,9 @@ using namespace obscura;
 using namespace obscura::ao_truth;
 using namespace std::chrono_literals;
 
-namespace {
-// A 40 x 40 m floor at y = 0 and a 10 m wall along z = 0 facing +z (as tests/ssao's reference test).
-std::vector<TriangleMesh> floorAndWall() {
-    TriangleMesh floor;
-    floor.vertices = {{-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}};
-    floor.indices = {0, 2, 1, 0, 3, 2};
-    TriangleMesh wall;
-    wall.vertices = {{-20, 0, 0}, {20, 0, 0}, {20, 10, 0}, {-20, 10, 0}};
-    wall.indices = {0, 1, 2, 0, 2, 3};
-    return {floor, wall};
-}
+using obscura::testing_support::floorAndWall;
 
+namespace {
 Request looking(double x, int rays = 64) {
     Request r;
     r.pose.eye = {x, 1.65, 4};

@@ -94,7 +94,7 @@ ao-cycle)
     start
     # O steps forwards, a quick Shift+O (Shift released with the O) backwards: from the default
     # horizon, O -> heightfield, Shift+O -> horizon, Shift+O -> cone. With Shift lost it would
-    # end on crytek.
+    # end on combined (horizon -> heightfield -> gtao -> combined).
     tap key o
     tap key shift+o
     tap key shift+o

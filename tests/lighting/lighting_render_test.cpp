@@ -1,7 +1,8 @@
 // Level lighting in the real game, headless, read back through the G-buffer views: the direct light
 // at each light's foot against map/quake_light.h (the C++ model of level.frag), worldspawn
 // _minlight as the ambient, and a floor face reached by 40 lights (OGRE hands a pass 8), every one
-// of them lighting its own foot. Levels: tests/lighting/levels (make_levels.py).
+// of them lighting its own foot; an env_ambient scaling the ambient inside its box only. Levels:
+// tests/lighting/levels (make_levels.py).
 #include <gtest/gtest.h>
 
 #include "core/image.h"
@@ -151,4 +152,23 @@ TEST(LightingRender, FortyLightsOverOneFaceEachLightTheirFoot) {
     const double foot = map::lightAt(first, {first.position.x, 0, first.position.z}, {0, 1, 0});
     EXPECT_NEAR(foot, 0.1, 1e-9);
     for (std::size_t i = 0; i < peaks.size(); ++i) EXPECT_NEAR(peaks[i], foot, 0.012) << "spot " << i;
+}
+
+TEST(LightingRender, EnvAmbientScalesTheAmbientInsideItsBoxOnly) {
+    // The floor's west half lies under an env_ambient (ambient 0.25, from the floor's top up): its
+    // HDR light is albedo x 0.25 x the level's ambient; the east half keeps all of it. Looking
+    // straight down 2 m either side of the box's face (x = 16 m) and 6 m inside / outside.
+    const map::Level level = map::loadLevel(kLevels + "ambient_area.map");
+    ASSERT_EQ(level.ambientAreas.size(), 1u);
+    const double full = level.lighting.minlight / map::kQuakeLightUnit;  // 0.2
+    const auto ambientAt = [&](const std::string& x, const std::string& name) {
+        const std::string pose = x + " 1.65 -8 0 -89";
+        const double a = std::pow(centre(shoot("ambient_area.map", pose, "albedo", name + "_albedo").image) / 255.0, 2.2);
+        EXPECT_GT(a, 0.05);
+        return decodeQuarter(centre(shoot("ambient_area.map", pose, "hdr-light", name + "_hdr").image)) / a;
+    };
+    EXPECT_NEAR(ambientAt("10", "inside"), 0.25 * full, 0.01);
+    EXPECT_NEAR(ambientAt("14", "inside_near"), 0.25 * full, 0.01);
+    EXPECT_NEAR(ambientAt("18", "outside_near"), full, 0.01 + 0.05 * full);
+    EXPECT_NEAR(ambientAt("22", "outside"), full, 0.01 + 0.05 * full);
 }

@@ -5,6 +5,7 @@
                         at each light's foot against map/quake_light.h), worldspawn _minlight 40
  levels/many_lights.map one 16 m floor face under 40 small lamps on a 2 m grid: more than the old
                         8-light cap (OGRE's 8 lights a pass)
+ levels/ambient_area.map a floor half under an env_ambient (ambient 0.25), _minlight 40
 Quake units, 32 a metre; the floor's top is z = 0."""
 import os
 
@@ -57,3 +58,13 @@ for i in range(8):
 write("many_lights.map", "40 lamps over one floor face (tests/lighting/lighting_render_test.cpp): every one must\n"
       "light its foot, though OGRE hands a pass 8 lights.",
       [], [box(0, 0, -16, 512, 512, 0)], entities)
+
+# ambient_area.map: a 32 x 16 m floor, _minlight 40 (an ambient of 0.2) and no light; an env_ambient
+# over the west half (x < 512 units = 16 m), ambient 0.25, from the floor's top (a surface on the
+# box's face counts as inside) to 4 m up.
+write("ambient_area.map", "An env_ambient over half a floor (tests/lighting/lighting_render_test.cpp): the ambient\n"
+      "there is 0.25 of the level's, the other half keeps it.",
+      [("_minlight", "40")], [box(0, 0, -16, 1024, 512, 0)],
+      [[("classname", "info_player_start"), ("origin", "768 256 24")]])
+with open(os.path.join(HERE, "levels", "ambient_area.map"), "a") as out:
+    out.write('{\n"classname" "env_ambient"\n"ambient" "0.25"\n' + box(0, 0, 0, 512, 512, 128, "trigger") + "}\n")

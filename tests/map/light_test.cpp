@@ -5,6 +5,7 @@
 
 #include "level/level_shared.h"
 #include "map/map_compile.h"
+#include "map/map_lights.h"
 #include "map/quake_light.h"
 #include "render/level_chunks.h"
 #include "render/light_grid.h"
@@ -266,4 +267,56 @@ TEST(LightGrid, TheLayoutTheShaderReadsIsTheOneThePackerWrites) {
     EXPECT_EQ(LEVEL_MIN_INVERSE_DISTANCE, kMinInverseDistance);
     EXPECT_EQ(LEVEL_LIGHT_INVERSE_SQUARE_A, static_cast<int>(LightFormula::InverseSquareA));
     EXPECT_EQ(LEVEL_LIGHT_LOCAL_MINIMUM, static_cast<int>(LightFormula::LocalMinimum));
+}
+
+// env_ambient: its brushes' box, its keys, and the factor the lighting pass mirrors.
+TEST(AmbientAreas, EnvAmbientBecomesAnInvisibleNonSolidBoxWithItsScale) {
+    std::vector<std::string> warnings;
+    // A 64-unit cube from (0, 0, 0) Quake = 2 m: world x 0..2, y (up) 0..2, z -2..0.
+    const Level level = compile(kWorld + entity("\"classname\" \"env_ambient\"\n\"ambient\" \"0.25\"\n\"blend\" \"0.5\"", cube(0, 0, 0)),
+                                &warnings);
+    ASSERT_EQ(level.ambientAreas.size(), 1u);
+    const AmbientArea& a = level.ambientAreas[0];
+    EXPECT_NEAR(a.box.min.x, 0, 1e-9);
+    EXPECT_NEAR(a.box.max.y, 2, 1e-9);
+    EXPECT_NEAR(a.box.min.z, -2, 1e-9);
+    EXPECT_DOUBLE_EQ(a.scale, 0.25);
+    EXPECT_DOUBLE_EQ(a.blend, 0.5);
+    for (const LevelBrush& b : level.brushes)
+        if (b.entityIndex == 2) EXPECT_FALSE(b.solid || b.visible);  // a volume, like a trigger's
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+}
+
+TEST(AmbientAreas, BadKeysWarnWithFileAndLineAndNoBrushesIsSkipped) {
+    std::vector<std::string> warnings;
+    const std::string text = kWorld + entity("\"classname\" \"env_ambient\"\n\"ambient\" \"2\"\n\"blend\" \"soft\"", cube(0, 0, 0)) +
+                             entity("\"classname\" \"env_ambient\"");
+    const Level level = compile(text, &warnings);
+    ASSERT_EQ(level.ambientAreas.size(), 1u);
+    EXPECT_DOUBLE_EQ(level.ambientAreas[0].scale, 0.1);  // out of range: the default
+    EXPECT_DOUBLE_EQ(level.ambientAreas[0].blend, 0);
+    EXPECT_TRUE(has(warnings, "t.map:16: 'ambient' value '2' is out of range, expected 0 to 1")) << testing::PrintToString(warnings);
+    EXPECT_TRUE(has(warnings, "t.map:16: 'blend' value 'soft' is not a number"));
+    EXPECT_TRUE(has(warnings, "env_ambient has no brushes; skipped"));
+}
+
+TEST(AmbientAreas, TheFactorIsTheScaleInsideOneOutsideAndBlendsAcrossTheFace) {
+    AmbientArea hard;
+    hard.box.extend({0, 0, 0});
+    hard.box.extend({4, 3, 4});
+    hard.scale = 0.2;
+    EXPECT_NEAR(ambientScaleAt({hard}, {2, 1, 2}), 0.2, 1e-12);
+    EXPECT_NEAR(ambientScaleAt({hard}, {2, 1, 4.01}), 0.2, 1e-12);  // a surface just outside the face: on it
+    EXPECT_DOUBLE_EQ(ambientScaleAt({hard}, {2, 1, 4.05}), 1.0);
+    EXPECT_DOUBLE_EQ(ambientScaleAt({}, {2, 1, 2}), 1.0);
+    AmbientArea soft = hard;
+    soft.blend = 1;
+    const double onFace = 1 + (0.2 - 1) * (0.5 + kAmbientAreaGrace);
+    EXPECT_NEAR(ambientScaleAt({soft}, {4 + kAmbientAreaGrace, 1, 2}), 0.6, 1e-12);  // half way at the face (and its grace)
+    EXPECT_NEAR(ambientScaleAt({soft}, {4, 1, 2}), onFace, 1e-12);
+    EXPECT_NEAR(ambientScaleAt({soft}, {2, 1, 2}), 0.2, 1e-12);
+    EXPECT_DOUBLE_EQ(ambientScaleAt({soft}, {2, 1, 6}), 1.0);
+    AmbientArea darker = hard;
+    darker.scale = 0.05;
+    EXPECT_NEAR(ambientScaleAt({hard, darker}, {2, 1, 2}), 0.05, 1e-12);  // overlaps: the darkest, not the product
 }

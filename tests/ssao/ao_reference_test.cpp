@@ -1,24 +1,14 @@
 #include <gtest/gtest.h>
 
 #include "ssao/ao_reference.h"
+#include "floor_and_wall.h"
 
 #include <cmath>
 
 using namespace obscura;
 using namespace obscura::ssao;
 
-namespace {
-// A 40 x 40 m floor at y = 0 and a 10 m wall standing on it along z = 0 (facing +z).
-std::vector<TriangleMesh> floorAndWall() {
-    TriangleMesh floor;
-    floor.vertices = {{-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20}};
-    floor.indices = {0, 2, 1, 0, 3, 2};
-    TriangleMesh wall;
-    wall.vertices = {{-20, 0, 0}, {20, 0, 0}, {20, 10, 0}, {-20, 10, 0}};
-    wall.indices = {0, 1, 2, 0, 2, 3};
-    return {floor, wall};
-}
-}  // namespace
+using obscura::testing_support::floorAndWall;
 
 TEST(AoReference, OpenFloorIsUnoccluded) {
     const AoReference ref(floorAndWall());

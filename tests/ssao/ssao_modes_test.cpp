@@ -16,6 +16,8 @@ TEST(SsaoModes, CycleForwardAndBackWraps) {
     EXPECT_EQ(cycleMode("nonsense", +1), m[1]);
     EXPECT_TRUE(isMode("hemisphere"));
     EXPECT_TRUE(isMode("heightfield"));
+    EXPECT_TRUE(isMode("gtao"));
+    EXPECT_EQ(cycleMode("heightfield", +1), "gtao");  // O reaches gtao last, then wraps to off
     EXPECT_FALSE(isMode("Hemisphere"));
     EXPECT_EQ(m.back(), "combined");  // appended: the cycle's older order is kept
 }

@@ -52,7 +52,7 @@ TEST(SsaoRender, EveryModeOnlyTakesLightAwayAndSomewhere) {
 }
 
 TEST(SsaoRender, AoOnlyViewShowsTheCreasesNotAFlatImage) {
-    for (const std::string mode : {"hemisphere", "horizon", "heightfield", "combined"}) {
+    for (const std::string mode : {"hemisphere", "horizon", "heightfield", "gtao", "combined"}) {
         const obscura::Image ao = render(mode + "_ao", "--ssao " + mode + " --ao-only");
         std::size_t white = 0, dark = 0;
         for (std::size_t i = 0; i < ao.rgba.size() / 4; ++i) {

@@ -53,6 +53,7 @@ configs=(
   "cone|--ssao cone"
   "horizon|--ssao horizon"
   "heightfield|--ssao heightfield"
+  "gtao|--ssao gtao"
   "combined|--ssao combined"
   "horizon-half|--ssao horizon --ssao-resolution half"
   "hemisphere-full-32|--ssao hemisphere --ssao-resolution full --ssao-samples 32"

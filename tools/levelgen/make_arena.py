@@ -216,10 +216,18 @@ room(SIGN_ROOM["x0"], SIGN_ROOM["y0"], SIGN_ROOM["x1"], SIGN_ROOM["y1"], SIGN_RO
      "concrete", doors={"w": [(SIGN_DOOR_Y, DOOR_W, DOOR_H)]})
 # Hung 1.6 m in front of the doorway and tilted 10 degrees down, its lamp 1.2 m behind it (0.4 m
 # from the wall): the letters' light on the far wall is (1.2 + 10.4) / 1.2 = 9.7 times their
-# 0.25 m, 2.4 m tall, readable; intensity 40 so it shows over the arena's sky ambient, which
-# reaches indoor rooms too (no per-room ambient yet).
+# 0.25 m, 2.4 m tall, readable; intensity 40 (chosen before the room's env_ambient below, over the
+# full sky ambient; kept: the letters on the far wall and the shafts stay bright in the dark room).
 entity("light_sign", origin=point(SIGN_ROOM["x0"] + 1.59375, SIGN_DOOR_Y + DOOR_W / 2, 2.75), mangle="10 0 0", text="EXIT",
        size="0.25", margin="0.08", light_distance="1.2", light="40", light_radius="0.015", range="16")
+# The sky's ambient does not get into room C: an env_ambient (engine_ext/map/README.md) scales it to
+# 0.1 there. Its box reaches 0.25 m into the walls, floor and ceiling slabs (0.5 m thick) and fades
+# over 0.4 m centred on its faces, so the room's own surfaces are fully inside (0.25 m in, past the
+# 0.2 m half-fade) and the far faces of its walls (0.25 m out: the courtyard's north wall) fully
+# outside; the doorway's light fades over the corridor's last 0.45 m.
+AMBIENT_AREAS = [({"ambient": "0.1", "blend": "0.4"},
+                  box(SIGN_ROOM["x0"] - 0.25, SIGN_ROOM["y0"] - 0.25, -0.25, SIGN_ROOM["x1"] + 0.25, SIGN_ROOM["y1"] + 0.25,
+                      SIGN_ROOM["height"] + 0.25, "trigger"))]
 
 # --- Firing range: 42 x 6 m, 5 m high, reached from the courtyard through a corridor.
 room(10, 3, 52, 9, 5, "concrete", "concrete", "concrete", doors={"n": [(30.5, DOOR_W, DOOR_H)]})
@@ -299,6 +307,10 @@ def write(out):
     out.write('// entity 1\n{\n"classname" "trigger_multiple"\n{\n' + "\n".join(face_line(f) for f in TRIGGER) + "\n}\n}\n")
     for i, e in enumerate(entities):
         out.write(f"// entity {i + 2}\n{{\n" + "".join(f'"{k}" "{v}"\n' for k, v in e.items()) + "}\n")
+    # Brush entities after the point entities (their lines, which messages name, stay where they were).
+    for i, (keys, b) in enumerate(AMBIENT_AREAS):
+        out.write(f"// entity {len(entities) + 2 + i}\n{{\n\"classname\" \"env_ambient\"\n" +
+                  "".join(f'"{k}" "{v}"\n' for k, v in keys.items()) + "{\n" + "\n".join(face_line(f) for f in b) + "\n}\n}\n")
 
 
 def plan(out, step_x=1, step_y=1, z=1):
