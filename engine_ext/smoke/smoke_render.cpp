@@ -29,6 +29,12 @@ SmokeRender::SmokeRender() {
     emptyVolume.loadDynamicImage(reinterpret_cast<Ogre::uchar*>(emptyCell), 1, 1, 1, Ogre::PF_FLOAT32_RGB);
     noVolume_ = Ogre::TextureManager::getSingleton().loadImage("Obscura/Smoke/NoVolume", Ogre::RGN_DEFAULT, emptyVolume,
                                                               Ogre::TEX_TYPE_3D, 0);
+    // What the sun's shadow map is cleared to (shadow_caster.frag): no caster, lit everywhere.
+    float clear = 1.f;
+    Ogre::Image lit;
+    lit.loadDynamicImage(reinterpret_cast<Ogre::uchar*>(&clear), 1, 1, 1, Ogre::PF_FLOAT32_R);
+    noSunShadow_ = Ogre::TextureManager::getSingleton().loadImage("Obscura/Smoke/NoSunShadow", Ogre::RGN_DEFAULT, lit,
+                                                                 Ogre::TEX_TYPE_2D, 0);
 }
 
 SmokeRender::~SmokeRender() {
@@ -41,6 +47,7 @@ SmokeRender::~SmokeRender() {
     }
     for (auto& [id, tex] : textures_) Ogre::TextureManager::getSingleton().remove(tex);
     Ogre::TextureManager::getSingleton().remove(noVolume_);
+    Ogre::TextureManager::getSingleton().remove(noSunShadow_);
 }
 
 void SmokeRender::setLights(Ogre::SceneManager& scene) {
@@ -141,8 +148,34 @@ std::string SmokeRender::missingFeature(const frame::Gpu& gpu) const {
     return gpu.renderTargetFormat(Ogre::PF_FLOAT32_RGBA) ? std::string() : "render targets in PF_FLOAT32_RGBA";
 }
 
-void SmokeRender::bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u, const frame::FrameContext&) {
+// The sun's shadow map as the level's surfaces see it (texture_viewproj_matrix 0 in
+// media/materials/level.material, which a quad pass does not get reliably): OGRE's shadow texture 0
+// and world -> map = clip -> texture bias x its camera's projection (render-system depth) x view,
+// as AutoParamDataSource::getTextureViewProjMatrix computes it (no camera-relative rendering
+// here). Without texture shadows (a level without a sun) or before OGRE made the texture: the 1x1
+// "nothing here" map, lit everywhere.
+void SmokeRender::bindSunShadow(Ogre::Pass& pass, frame::Uniforms& u, const Ogre::Camera* camera) const {
+    Ogre::TexturePtr map = noSunShadow_;
+    Ogre::Matrix4 viewProj = Ogre::Matrix4::IDENTITY;
+    Ogre::SceneManager* scene = camera ? camera->getSceneManager() : nullptr;
+    if (scene && scene->isShadowTechniqueTextureBased() && !scene->getShadowTextureConfigList().empty()) {
+        const Ogre::TexturePtr& tex = scene->getShadowTexture(0);
+        Ogre::RenderTarget* target = tex ? tex->getBuffer()->getRenderTarget() : nullptr;
+        if (target && target->getNumViewports() > 0 && target->getViewport(0)->getCamera()) {
+            const Ogre::Camera* cam = target->getViewport(0)->getCamera();
+            map = tex;
+            viewProj = Ogre::Matrix4::CLIPSPACE2DTOIMAGESPACE * cam->getProjectionMatrixWithRSDepth() * cam->getViewMatrix();
+        }
+    }
+    if (auto* unit = pass.getTextureUnitState("sunShadowMap")) unit->setTexture(map);
+    const float w = static_cast<float>(map->getWidth()), h = static_cast<float>(map->getHeight());
+    u.set("sunShadowTexel", Ogre::Vector4(1.f / w, 1.f / h, w, h));
+    u.set("sunShadowViewProj", viewProj);
+}
+
+void SmokeRender::bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u, const frame::FrameContext& ctx) {
     if (passId != frame::kVolumesPass) return;
+    bindSunShadow(pass, u, ctx.camera);
     u.set("smokeCount", static_cast<float>(bindings_.size()));
     u.set("smokeSigma", sigma_);
     u.set("smokeTime", time_);

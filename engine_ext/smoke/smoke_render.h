@@ -3,7 +3,7 @@
 // SmokeVolume::exportRGBFloat) uploaded to its own PF_FLOAT32_RGB 3D texture after the simulation
 // steps, and ray-marched at half resolution against the G-buffer's depth in the frame's shared
 // volumetric pass (frame::kVolumesCompositor, shaders/frame/volumes.frag, shaders/smoke/), lit by the sun, the sky and the level's point
-// lights near the smoke. The frame lays the result (volumeMap) over the light before the tone map.
+// lights near the smoke; the sun through the level's sun shadow map too (bound here each frame). The frame lays the result (volumeMap) over the light before the tone map.
 // Textures follow the volumes' ids: made when one appears, dropped when it finishes.
 #pragma once
 
@@ -67,11 +67,13 @@ private:
         Ogre::Vector3 min, size, occupiedMin, occupiedSize;
     };
     void chooseLights();
+    void bindSunShadow(Ogre::Pass& pass, frame::Uniforms& u, const Ogre::Camera* camera) const;
     std::map<int, Ogre::TexturePtr> textures_;
     std::vector<Binding> bindings_;
     std::vector<float> buffer_;
     std::vector<PointLight> lights_, bound_;  // all, and those lighting the smoke now
     Ogre::TexturePtr noVolume_;  // 1x1x1, bound to unused units
+    Ogre::TexturePtr noSunShadow_;  // 1x1 PF_FLOAT32_R 1.0 (no caster): bound when there is no sun shadow map
     float sigma_ = 4, time_ = 0;
     double exportSeconds_ = 0, uploadSeconds_ = 0;
     std::size_t uploads_ = 0;

@@ -8,8 +8,7 @@
 // The hemispheric ambient (sky from above, ground from below), which AO darkens, is added by the
 // frame's lighting pass (shaders/frame/lighting.frag), and the tone map is applied once at the end.
 uniform sampler2D albedoMap;
-uniform sampler2D sunShadowMap;  // -height/10^4 of the caster nearest the sun (shadow_caster.frag)
-uniform vec4 sunShadowTexel;     // 1/width, 1/height, width, height of sunShadowMap
+#include "sun_shadow.glsl"  // sunShadowMap, sunShadowTexel
 uniform vec3 sunDirection;    // world space, unit, pointing towards the sun
 uniform vec3 sunColour;       // linear RGB
 #include "level_shared.h"
@@ -38,19 +37,9 @@ ivec2 texel(int address, int width) { return ivec2(address & (LEVEL_LIGHT_ROW - 
 // Fraction of the sun reaching this point: 2x2 percentage-closer filtering of the shadow map.
 float sunVisibility(float ndotl)
 {
-    vec2 p = vShadowPos.xy / vShadowPos.w;
-    if (p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0) return 1.0;  // outside the map: lit
     // Slope-scaled bias, metres: 3 cm facing the sun, up to 15 cm at grazing angles (acne-free
     // on 1024^2 texels spread over up to 50 m).
-    float height = dot(vWorldPos, sunDirection) + 0.03 + 0.12 * (1.0 - ndotl);
-    float receiver = -height * 1e-4;
-    float lit = 0.0;
-    for (int y = 0; y < 2; ++y)
-        for (int x = 0; x < 2; ++x) {
-            vec2 uv = p + (vec2(x, y) - 0.5) * sunShadowTexel.xy;
-            lit += (receiver <= texture(sunShadowMap, uv).r) ? 1.0 : 0.0;
-        }
-    return lit * 0.25;
+    return sunShadowLit(vShadowPos.xy / vShadowPos.w, dot(vWorldPos, sunDirection) + 0.03 + 0.12 * (1.0 - ndotl));
 }
 
 void main()

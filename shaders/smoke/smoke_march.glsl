@@ -7,7 +7,11 @@
 //   sun    sunColour x the solver's transmittance towards the sun (G) through a Henyey-Greenstein
 //          phase (g = 0.3, forward), plus two weaker, wider "octaves" of multiple scattering
 //          (Wrenninge et al. 2013: transmittance^0.5 and ^0.25, weights 0.5 and 0.25, g halved
-//          each time), so the lit side is bright, the core and the far side a shaded grey
+//          each time), so the lit side is bright, the core and the far side a shaded grey; all of
+//          it x the level's sun shadow map at the sample (smokeSunShadow): the solver's
+//          transmittance holds the smoke and the walls and roofs inside its box, the map every
+//          caster of the level, the tall building outside the box too (engine_ext/smoke/README.md,
+//          "Rendering and play", says why the product counts a wall in the box once)
 //   sky    the hemispheric ambient x how open the sky is above the cell (B, swept by the solver
 //          down through smoke and roofs), never below kSmokeIndirect (light bounced in)
 //   lamps  the level's point lights near the smoke (smoke_render.cpp picks at most
@@ -19,6 +23,8 @@
 // Needs: ObscuraLighting's sun and ambient; VOLUME_MAX_SEGMENTS (volumes.frag).
 #include "smoke_shared.h"
 #include "volume_phase.glsl"
+#include "sun_shadow.glsl"  // sunShadowMap, sunShadowTexel (bound by smoke_render.cpp)
+uniform mat4 sunShadowViewProj;    // world -> sunShadowMap (xy in [0, 1] after the divide), as level.vert's
 uniform float smokeCount;          // volumes bound (0..SMOKE_MAX_VOLUMES)
 uniform vec3 smokeMin[SMOKE_MAX_VOLUMES];      // world AABB of each volume's grid (its texture)
 uniform vec3 smokeSize[SMOKE_MAX_VOLUMES];
@@ -39,6 +45,11 @@ uniform vec3 skyAmbient;
 uniform vec3 groundAmbient;
 const vec3 kSmokeAlbedo = vec3(0.9, 0.9, 0.88);  // single-scattering albedo: light grey, a little warm
 const float kSmokeG = 0.3;         // Henyey-Greenstein asymmetry: smoke scatters somewhat forwards
+// Metres towards the sun a sample is moved before the shadow map's test: a volume has no slope
+// to scale by; 0.2 m is level.frag's grazing bias (0.15 m) with a margin, so a sample in the air
+// just in front of a sunlit wall is not shadowed by the wall's own texels, and under the grid's
+// 0.25 m cell, so what leaks past a caster is no more than the solver's transmittance resolves.
+const float kSmokeShadowBias = 0.2;
 const float kSmokeIndirect = 0.3;  // the ambient's share that reaches smoke under a roof (bounced in;
                                    // the surfaces' ambient there is not darkened by the roof either)
 // A rotation (orthonormal) for the noise lattice: value noise is blocky along its lattice axes;
@@ -74,6 +85,15 @@ float smokeNoise(vec3 p)
 }
 
 
+// The level's sun shadow map at p: 0 behind a caster, 1 in the sun (and outside the map, and
+// without a sun: nothing to shadow, nothing read).
+float smokeSunShadow(vec3 p)
+{
+    if (dot(sunColour, sunColour) <= 0.0) return 1.0;
+    vec4 s = sunShadowViewProj * vec4(p, 1.0);
+    return sunShadowLit(s.xy / s.w, dot(p, sunDirection) + kSmokeShadowBias);
+}
+
 // The smoke's parts of a view ray origin + t * dir, t < maxT: each volume's occupied box as an
 // interval, added to the volumetric pass's list (shaders/frame/volumes.frag marches them merged).
 void smokeSegments(vec3 origin, vec3 dir, float maxT, inout int n, inout float segT0[VOLUME_MAX_SEGMENTS],
@@ -107,6 +127,7 @@ vec4 smokeAt(vec3 p, vec3 dir)
     int count = int(smokeCount), lights = int(smokeLightCount);
     vec3 scattered = vec3(0.0);
     float sigma = 0.0;
+    float sunShadow = -1.0;  // the shadow map at p: read once, at the first volume with smoke here
     for (int i = 0; i < SMOKE_MAX_VOLUMES; ++i) {
         if (i >= count) break;
         vec3 lo = smokeBoxMin[i], hi = lo + smokeBoxSize[i];
@@ -122,7 +143,8 @@ vec4 smokeAt(vec3 p, vec3 dir)
         float detail = 0.55 + 0.6 * smokeNoise(q * 1.3) + 0.3 * (smokeNoise(kNoiseTurn * q * 2.9) - 0.5);
         float s = smokeSigma * cell.r * detail;
         float sunT = clamp(cell.g, 0.0, 1.0), sunT2 = sqrt(sunT);
-        vec3 lit = sunColour * dot(sunPhase, vec3(sunT, sunT2, sqrt(sunT2)))
+        if (sunShadow < 0.0) sunShadow = smokeSunShadow(p);
+        vec3 lit = sunColour * (sunShadow * dot(sunPhase, vec3(sunT, sunT2, sqrt(sunT2))))
                  + ambient * mix(kSmokeIndirect, 1.0, clamp(cell.b, 0.0, 1.0));
         for (int l = 0; l < SMOKE_MAX_LIGHTS; ++l) {
             if (l >= lights) break;
