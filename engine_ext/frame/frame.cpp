@@ -55,6 +55,13 @@ bool Gpu::renderTargetFormat(Ogre::PixelFormat f, bool volume) const {
                                                                   Ogre::TU_RENDERTARGET);
 }
 
+void setViewRay(Uniforms& u, const FrameContext& ctx) {
+    const Ogre::Matrix4& proj = ctx.camera->getProjectionMatrix();
+    u.set("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
+    u.set("flipY", ctx.flipY ? 1.0f : 0.0f);
+    u.set("inverseView", ctx.camera->getViewMatrix().inverse());
+}
+
 bool Uniforms::check(const char* name) {
     if (!missing_) return true;
     if (!params_._findNamedConstantDefinition(name)) missing_->push_back(name);
@@ -358,22 +365,12 @@ void Frame::setAmbientAreas(std::vector<AmbientBox> areas) {
 }
 
 void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
-    if (passId == kVolumesPass) {
-        // The shared volumetric pass: the camera, for whichever techniques march in it.
-        const Ogre::Matrix4& proj = camera_.getProjectionMatrix();
-        u.set("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
-        u.set("flipY", context_.flipY ? 1.0f : 0.0f);
-        u.set("inverseView", camera_.getViewMatrix().inverse());
-    }
+    if (passId == kVolumesPass) setViewRay(u, context_);  // for whichever techniques march in it
     for (Technique* t : e.techniques) t->bind(passId, pass, u, context_);
     if (!e.techniques.empty()) return;
     if (passId == kLightingPass) {
         u.set("aoPresent", published_["aoMap"] != noAo_ ? 1.0f : 0.0f);
-        // The ambient areas, tested at each pixel's world position.
-        const Ogre::Matrix4& proj = camera_.getProjectionMatrix();
-        u.set("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
-        u.set("flipY", context_.flipY ? 1.0f : 0.0f);
-        u.set("inverseView", camera_.getViewMatrix().inverse());
+        setViewRay(u, context_);  // the ambient areas are tested at each pixel's world position
         float mins[FRAME_MAX_AMBIENT_AREAS * 4] = {}, maxs[FRAME_MAX_AMBIENT_AREAS * 4] = {};
         for (std::size_t i = 0; i < ambientAreas_.size(); ++i) {
             const AmbientBox& a = ambientAreas_[i];

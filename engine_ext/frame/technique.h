@@ -62,6 +62,10 @@ private:
     std::vector<std::string>* missing_;
 };
 
+// The camera a full-screen pass rebuilds each pixel's view ray with (shaders/frame/view_ray.glsl):
+// projScale, flipY, inverseView.
+void setViewRay(Uniforms& u, const FrameContext& ctx);
+
 class Technique {
 public:
     virtual ~Technique() = default;

@@ -75,10 +75,7 @@ public:
     std::string compositor() const override { return r_.mode_ != SignMode::Off && !r_.chosen_.empty() ? kSurfacesCompositor : ""; }
     void bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u, const frame::FrameContext& ctx) override {
         if (passId != kSurfacesPass) return;
-        const Ogre::Matrix4& proj = ctx.camera->getProjectionMatrix();
-        u.set("projScale", Ogre::Vector2(proj[0][0], proj[1][1]));
-        u.set("flipY", ctx.flipY ? 1.0f : 0.0f);
-        u.set("inverseView", ctx.camera->getViewMatrix().inverse());
+        frame::setViewRay(u, ctx);
         r_.bindSigns(pass, u);
     }
 

@@ -7,6 +7,7 @@
 #include "frame_shared.h"
 #include "upsample.glsl"
 #include "sun_wrap.glsl"
+#include "view_ray.glsl"
 uniform sampler2D gbufferAlbedo;
 uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferDepth;
@@ -21,9 +22,6 @@ uniform float aoPresent;        // 0: no AO stage runs, AO is 1 everywhere
 uniform vec3 skyAmbient;        // linear RGB, light arriving from above (ObscuraLighting)
 uniform vec3 groundAmbient;     // linear RGB, light bounced from below
 uniform float exposure;         // the output's, to undo the tone map for the sky
-uniform vec2 projScale;         // projection matrix [0][0] and [1][1] (set by the frame)
-uniform float flipY;            // 1 when render textures are stored upside down
-uniform mat4 inverseView;       // view -> world
 uniform float ambientAreaCount; // the level's env_ambient boxes (Frame::setAmbientAreas)
 uniform vec4 ambientAreaMin[FRAME_MAX_AMBIENT_AREAS];  // xyz the box's low corner (world), w its ambient scale
 uniform vec4 ambientAreaMax[FRAME_MAX_AMBIENT_AREAS];  // xyz the high corner, w the blend across its faces (m)
@@ -82,8 +80,7 @@ void main()
     }
     vec3 ambient = mix(groundAmbient, skyAmbient, skyward);
     if (ambientAreaCount > 0.5) {
-        vec2 ndc = vec2(vUv.x, flipY > 0.5 ? 1.0 - vUv.y : vUv.y) * 2.0 - 1.0;
-        vec3 world = (inverseView * vec4(vec3(ndc / projScale, -1.0) * depth, 1.0)).xyz;
+        vec3 world = (inverseView * vec4(viewRayAt(vUv) * depth, 1.0)).xyz;
         ambient *= ambientScaleAt(world);
     }
     fragColour = vec4(albedo * (direct + ambient * ao), 1.0);

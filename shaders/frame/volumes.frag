@@ -12,12 +12,10 @@
 // becomes T e^(-s dt). Writes the in-scattered light (linear HDR) and the transmittance; the output
 // pass upsamples them depth-aware and lays them over the light.
 uniform sampler2D gbufferDepth;  // linear depth at full resolution (bound by the frame)
-uniform vec2 projScale;      // projection matrix [0][0] and [1][1] (set by the frame)
-uniform float flipY;         // 1 when render textures are stored upside down
-uniform mat4 inverseView;    // view -> world
 in vec2 vUv;
 out vec4 fragColour;
 #define VOLUME_MAX_SEGMENTS 6  // SMOKE_MAX_VOLUMES boxes + SIGN_MAX_LIGHTS beams
+#include "view_ray.glsl"
 #include "smoke_march.glsl"
 #include "sign_march.glsl"
 const float kVolumeStep = 0.25;  // metres: the smoke grid's cell (finer shows no more of it) and
@@ -30,8 +28,7 @@ void main()
     float transmittance = 1.0;
     ivec2 size = textureSize(gbufferDepth, 0);
     float depth = texelFetch(gbufferDepth, clamp(ivec2(vUv * vec2(size)), ivec2(0), size - 1), 0).r;
-    vec2 ndc = vec2(vUv.x, flipY > 0.5 ? 1.0 - vUv.y : vUv.y) * 2.0 - 1.0;
-    vec3 viewDir = normalize(vec3(ndc / projScale, -1.0));
+    vec3 viewDir = normalize(viewRayAt(vUv));
     float maxT = depth > 0.0 ? depth / -viewDir.z : 1e4;
     vec3 origin = inverseView[3].xyz, dir = normalize(mat3(inverseView) * viewDir);
 

@@ -6,13 +6,11 @@
 #include "frame_shared.h"
 #include "signs_shared.h"
 #include "sign_light.glsl"
+#include "view_ray.glsl"
 uniform sampler2D gbufferAlbedo;
 uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferDepth;
 uniform sampler2D decalAlbedo;   // premultiplied decal albedo (gamma) + coverage, or 1x1 clear
-uniform vec2 projScale;          // projection matrix [0][0] and [1][1]
-uniform float flipY;             // 1 when render textures are stored upside down
-uniform mat4 inverseView;        // view -> world
 in vec2 vUv;
 out vec4 fragColour;
 
@@ -25,8 +23,7 @@ void main()
         fragColour = vec4(0.0);
         return;
     }
-    vec2 ndc = vec2(vUv.x, flipY > 0.5 ? 1.0 - vUv.y : vUv.y) * 2.0 - 1.0;
-    vec3 viewPos = vec3(ndc / projScale, -1.0) * depth;
+    vec3 viewPos = viewRayAt(vUv) * depth;
     vec3 p = (inverseView * vec4(viewPos, 1.0)).xyz;
     vec3 n = normalize(mat3(inverseView) * (texelFetch(gbufferNormal, pixel, 0).xyz * 2.0 - 1.0));
     // 2 cm off the surface: the shadow map's texel and its depth's rounding stay behind it.
