@@ -59,7 +59,7 @@ struct Settings {
     // Ambient occlusion (engine_ext/ssao). The default is picked by the error/cost table in
     // engine_ext/ssao/README.md: lowest error of the modes at a third of the cost of a full-resolution
     // 32-sample hemisphere.
-    std::string ssao = "horizon";
+    std::string ssao = "combined";
     double ssaoRadius = ssao::kRadius.value;  // defaults and reasons: engine_ext/ssao/ssao_knobs.h
     double ssaoLargeRadius = ssao::kLargeRadius.value;  // the combined mode's large scale
     double ssaoIntensity = ssao::kIntensity.value;

@@ -176,7 +176,7 @@ void AmbientOcclusion::bind(Ogre::uint32 passId, Ogre::Pass&, frame::Uniforms& u
         u.setArray("kernel", kernels[static_cast<std::size_t>(samples - 1)].data(), SSAO_MAX_SAMPLES, 3);
         // GTAO's visibility is already the cosine-weighted integral: the default intensity leaves it
         // as it is, others raise it to a power (intensity 4 squares it, 1 takes its square root).
-        if (mode_ == "gtao") u.set("visibilityPower", static_cast<float>(kIntensity.clamp(knobs_.intensity) / kIntensity.value));
+        if (mode_ == "gtao" || mode_ == "combined") u.set("visibilityPower", static_cast<float>(kIntensity.clamp(knobs_.intensity) / kIntensity.value));
         if (readsHeightMap(mode_)) {
             u.set("inverseView", ctx.camera->getViewMatrix().inverse());
             u.set("heightViewProj", heightViewProj_);

@@ -1,33 +1,33 @@
 #version 330 core
 // The combined mode (seed c's prescription, issue 14): the small scale, everything within `radius`,
-// from a screen-space mode (horizon.glsl); the large scale, what lies between `radius` and
+// from a screen-space mode (GTAO's horizon search, gtao_search.glsl); the large scale, what lies between `radius` and
 // `largeRadius`, from rays through the level's height map (heightfield.glsl), which sees walls off
 // the screen and behind the camera. The two count disjoint distance ranges and their visibilities
 // multiply: V = V_small(0..r) x V_large(r..R), so an occluder both could see is counted once (as
 // max() of two estimates of overlapping ranges did not: it kept the larger error of the two).
-// Under a roof the map says nothing; there the large scale is the screen's horizon's visibility
-// beyond r (screenVisibilityBeyond).
+// Under a roof the map says nothing; there the large scale is the screen's visibility beyond r
+// (screenVisibilityBeyond).
 in vec2 vUv;
 out vec4 fragColour;
 #include "ssao_common.glsl"
-#include "horizon.glsl"
+#include "gtao.glsl"
+#include "gtao_search.glsl"
 #include "heightfield.glsl"
 uniform float largeRadius;       // metres: the large scale's reach (ssao_knobs.h, kLargeRadius)
 uniform float heightRays;        // rays per pixel through the height map
+uniform float visibilityPower;   // intensity / its default (ssao_compositor.cpp), as the gtao mode's
 
-// The small scale: the one screen-space mode this mode is built on.
-float smallOcclusion(vec4 p, vec3 n, vec3 rnd) { return horizonOcclusion(p, n, rnd); }
+// The small scale: the one screen-space mode this mode is built on, as visibility (1 = open).
+float smallVisibility(vec4 p, vec3 n, vec3 rnd) { return gtaoVisibilityWithin(p, n, rnd, radius); }
 
-// Under a roof: the screen's visibility beyond the radius, as the horizon measures it: V(0..R) /
-// V(0..r), the share of what is open to r that stays open to R. Horizons do not add up over
-// ranges (a ceiling seen within r and beyond it is one horizon, the higher one), so the product
-// with a horizon over r..R alone darkened a wall-ceiling crease twice (0.17 against the 2 m
-// truth's 0.5 on tests/ssao's room).
-float screenVisibilityBeyond(vec4 p, vec3 n, vec3 rnd)
+// Under a roof: the screen's visibility beyond the radius, V(0..R) / V(0..r), the share of what is
+// open to r that stays open to R. Horizons do not add up over ranges (a ceiling seen within r and
+// beyond it is one horizon, the higher one), so the product with a horizon over r..R alone
+// darkened a wall-ceiling crease twice (0.17 against the 2 m truth's 0.5 on tests/ssao's room).
+float screenVisibilityBeyond(vec4 p, vec3 n, vec3 rnd, float small)
 {
-    float toLarge = 1.0 - clamp(horizonOcclusionWithin(p, n, rnd, largeRadius), 0.0, 1.0);
-    float toSmall = 1.0 - clamp(horizonOcclusionWithin(p, n, rnd, radius), 0.0, 1.0);
-    return clamp(toLarge / max(toSmall, 1e-3), 0.0, 1.0);
+    float toLarge = gtaoVisibilityWithin(p, n, rnd, largeRadius);
+    return clamp(toLarge / max(small, 1e-3), 0.0, 1.0);
 }
 
 void main()
@@ -36,13 +36,14 @@ void main()
     if (p.w < 0.5) { fragColour = kSkyAo; return; }
     vec3 n = viewNormal(vUv);
     vec3 rnd = pixelNoise();
-    float small = 1.0 - clamp(smallOcclusion(p, n, rnd), 0.0, 1.0);
+    float small = clamp(smallVisibility(p, n, rnd), 0.0, 1.0);
     float large = 1.0;
     if (largeRadius > radius) {
         vec3 wp = (inverseView * vec4(p.xyz, 1.0)).xyz;
         vec3 wn = normalize(mat3(inverseView) * n);
         large = heightVisibility(wp, wn, radius, largeRadius, int(heightRays));
-        if (large < 0.0) large = screenVisibilityBeyond(p, n, rnd);
+        if (large < 0.0) large = screenVisibilityBeyond(p, n, rnd, small);
     }
-    fragColour = aoResult(small * large, -p.z);
+    float v = clamp(small * large, 1e-4, 1.0);  // pow(0, 0) is undefined (intensity 0)
+    fragColour = aoResult(pow(v, visibilityPower), -p.z);
 }

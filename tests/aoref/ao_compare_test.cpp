@@ -84,3 +84,16 @@ TEST(AoCompare, Rgba8RedChannelAndFormat) {
     EXPECT_NE(line.find("occluded_pixels=2 "), std::string::npos) << line;
     EXPECT_NE(line.find("pixels=3 "), std::string::npos) << line;
 }
+
+TEST(AoCompare, BoxAverageIsEachBlocksMean) {
+    // 4 x 2 in 2 x 2 blocks: the left block 0, 1, 0.5, 0.5; the right block all 0.2.
+    const std::vector<float> img = {0.0f, 1.0f, 0.2f, 0.2f,  //
+                                    0.5f, 0.5f, 0.2f, 0.2f};
+    const std::vector<float> avg = boxAverage(img, 4, 2, 2);
+    ASSERT_EQ(avg.size(), 2u);
+    EXPECT_NEAR(avg[0], 0.5f, 1e-6);
+    EXPECT_NEAR(avg[1], 0.2f, 1e-6);
+    EXPECT_EQ(boxAverage(img, 4, 2, 1), img);
+    EXPECT_THROW(boxAverage(img, 4, 2, 3), std::invalid_argument);
+    EXPECT_THROW(boxAverage(img, 2, 2, 2), std::invalid_argument);
+}

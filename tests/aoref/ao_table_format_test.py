@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """tools/aoref/ao_table_format.py on a two-view fixture: the mean row, the × better than off line
 (of the means, and the worst view), the goal row (3x at the local radius, 2x at the large one, on
-every view) and a view with no occluded pixels left out of the ratios."""
+every view, and the lowest mean), a view with no occluded pixels left out of the ratios, and a
+configuration whose defaults are its large-radius frame (`combined`) scored at its defaults from
+that frame."""
 import os
 import subprocess
 import sys
@@ -23,6 +25,12 @@ rows = [
     row("a", "2", "-", "off", 0.1, 0.30), row("a", "2", "0.6", "horizon", 0.1, 0.20), row("a", "2", "2", "horizon", 0.05, 0.10),
     row("b", "2", "-", "off", 0.1, 0.24), row("b", "2", "0.6", "horizon", 0.1, 0.20), row("b", "2", "2", "horizon", 0.05, 0.12),
     row("c", "2", "-", "off", 0.0, 0.0, 0), row("c", "2", "0.6", "horizon", 0.0, 0.0, 0), row("c", "2", "2", "horizon", 0.0, 0.0, 0),
+    # combined: 6x and 3.75x at the local radius; asked for 2 m 3x and 2.4x; its local-radius frame
+    # against the 2 m truth 1.2x and 1.1x, which its defaults' table must not use
+    row("a", "0.6", "0.6", "combined", 0.01, 0.05), row("b", "0.6", "0.6", "combined", 0.01, 0.08),
+    row("c", "0.6", "0.6", "combined", 0.0, 0.0, 0),
+    row("a", "2", "0.6", "combined", 0.1, 0.25), row("b", "2", "0.6", "combined", 0.1, 0.22),
+    row("a", "2", "2", "combined", 0.05, 0.10), row("b", "2", "2", "combined", 0.05, 0.10),
 ]
 here = os.path.dirname(os.path.abspath(__file__))
 tool = os.path.join(here, "..", "..", "tools", "aoref", "ao_table_format.py")
@@ -30,7 +38,7 @@ with tempfile.NamedTemporaryFile("w", suffix=".tsv", delete=False) as f:
     f.write(HEADER + "\n" + "\n".join(rows) + "\n")
 try:
     out = subprocess.run([sys.executable, tool, f.name, "--local", "0.6", "--large", "2", "--views", "c a b missing",
-                          "--configs", "crytek horizon"], check=True, capture_output=True, text=True).stdout
+                          "--configs", "crytek horizon combined", "--defaults", "horizon=local combined=large"], check=True, capture_output=True, text=True).stdout
 finally:
     os.unlink(f.name)
 
@@ -54,7 +62,9 @@ expect("| 2.1× (worst 1.5× b) |")
 expect("| ≥ 3× better than off on every view? (views that meet it) | | | no (1/2) |")
 expect("| ≥ 2× better than off on every view? (views that meet it) | | | no (0/2) |")  # default radius vs 2 m
 expect("| ≥ 2× better than off on every view? (views that meet it) | | | **yes** (2/2) |")  # --ssao-radius 2
-expect("- `horizon`: 0.6 m not met; 2 m not met (with `--ssao-radius 2`: met)")
+expect("| ≥ 2× better than off on every view? (views that meet it) | | | no (0/2) | **yes** (2/2) |")  # defaults
+expect("- `horizon`: 0.6 m not met; 2 m met (at its defaults: not met); lowest mean: neither")
+expect("- `combined`: 0.6 m met; 2 m met (at its defaults: met); lowest mean: 0.6 m and 2 m")
 if "missing" in out:
     failures.append("a view without results was printed")
 if failures:

@@ -47,6 +47,22 @@ std::vector<float> aoFromRgba8(const std::vector<std::uint8_t>& rgba) {
     return ao;
 }
 
+std::vector<float> boxAverage(const std::vector<float>& image, int width, int height, int s) {
+    if (s < 1 || width <= 0 || height <= 0 || width % s || height % s ||
+        image.size() != static_cast<std::size_t>(width) * height)
+        throw std::invalid_argument("boxAverage: the block must divide the image's sides");
+    const int w = width / s, h = height / s;
+    std::vector<float> out(static_cast<std::size_t>(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            double sum = 0;
+            for (int j = 0; j < s; ++j)
+                for (int i = 0; i < s; ++i) sum += image[static_cast<std::size_t>(y * s + j) * width + x * s + i];
+            out[static_cast<std::size_t>(y) * w + x] = static_cast<float>(sum / (s * s));
+        }
+    return out;
+}
+
 std::string formatAoError(const AoError& e) {
     char line[256];
     std::snprintf(line, sizeof line,

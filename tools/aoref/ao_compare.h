@@ -36,6 +36,13 @@ std::vector<float> whiteAo(std::size_t pixels);
 // A grey RGBA8 image's red channel as AO in 0..1 (what the game's AO-only capture holds).
 std::vector<float> aoFromRgba8(const std::vector<std::uint8_t>& rgba);
 
+// The mean over s x s blocks of a row-major width x height image: the (width/s) x (height/s) image
+// a pixel of which is the average of the s x s pixels it covers (a box filter, the pixel's area).
+// The table traces the truth and renders the game at s times the scored size and scores both
+// averaged down, so each scored pixel is its footprint's average AO in both. Throws
+// std::invalid_argument unless s >= 1 divides both sides and the image is width x height.
+std::vector<float> boxAverage(const std::vector<float>& image, int width, int height, int s);
+
 // One line: "mae=... rmse=... bias=... pixels=... occluded_mae=... occluded_bias=...
 // occluded_pixels=... occluded_share=..." (tools/aoref/ao_table.sh reads these keys).
 std::string formatAoError(const AoError& e);

@@ -1,16 +1,22 @@
 #!/usr/bin/env bash
 # The AO error/cost table, one command. For each view, the ray-traced reference (obscura_aoref,
-# 256 rays/pixel, 320x180) against each AO configuration's AO-only frame from the game (same pose,
-# no HUD) and against `off` (an all-white frame, scored by the same code), as whole-frame MAE, and
-# MAE and bias (mode - reference) over the occluded region (reference < 0.95: aoref/ao_compare.h).
-# Two truths: the local radius (LOCAL_RADIUS, 0.6 m: the game's default --ssao-radius) and a
-# large-scale one (LARGE_RADIUS, 2 m). Against the large-scale truth the modes are scored twice: at
-# their default radius (the frame the game really shows) and with --ssao-radius set to it.
+# 256 rays/pixel, scored at 320x180) against each AO configuration's AO-only frame from the game
+# (same pose, no HUD) and against `off` (an all-white frame, scored by the same code), as
+# whole-frame MAE, and MAE and bias (mode - reference) over the occluded region (reference < 0.95:
+# aoref/ao_compare.h). The game renders at SCALE (4) times the scored size, 1280x720, the size the
+# cost is measured at, and the truth traces the same 1280x720 pixels with 256/SCALE^2 rays each;
+# both are averaged over SCALE x SCALE blocks (a 320x180 game would score an 80x45 AO buffer that
+# nobody plays at). Two truths: the local radius (LOCAL_RADIUS, 0.6 m: the game's default
+# --ssao-radius) and a large-scale one (LARGE_RADIUS, 2 m). Each configuration is scored against a
+# truth when asked for its radius (its radius knob set to it: --ssao-radius for the one-radius
+# modes; --ssao-large-radius for `combined`, whose small scale stays at the local radius, so at the
+# local radius it is its small term alone), and against the large-scale truth also at its defaults
+# (the frame the game really shows).
 # Then every configuration's frame time at 1280x720 from one timedemo run
 # (bench/timedemo_ao.replay). Images, results.tsv and the tables land in build/ao_table/ (table.md).
 # Usage: xvfb-run -a -s "-screen 0 1920x1080x24" tools/aoref/ao_table.sh   (after scripts/build.sh)
 #        VIEWS="courtyard sibenik_nave" / CONFIGS="horizon cone" run a subset (names below);
-#        LOCAL_RADIUS=, LARGE_RADIUS=, INTENSITY=, RAYS= change the knobs; NO_COST=1 skips the timedemo.
+#        LOCAL_RADIUS=, LARGE_RADIUS=, INTENSITY=, RAYS=, SCALE= change the knobs; NO_COST=1 skips the timedemo.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 game=build/game/obscura
@@ -18,7 +24,7 @@ ref=build/tools/aoref/obscura_aoref
 out=build/ao_table
 mkdir -p "$out"
 export XDG_CACHE_HOME="$(pwd)/build/cache"
-W=320; H=180; I=${INTENSITY:-2}; RAYS=${RAYS:-256}
+W=320; H=180; I=${INTENSITY:-2}; RAYS=${RAYS:-256}; S=${SCALE:-4}; GW=$((W * S)); GH=$((H * S))
 RL=${LOCAL_RADIUS:-0.6}; RG=${LARGE_RADIUS:-2}
 arena=media/levels/arena.map e3m4=../shared/maps/librequake/e3m4.map sibenik=tests/ssao/views/sibenik.map
 # name | level | eye "x y z yaw pitch" (world metres, degrees; yaw 0 faces -z, 90 faces -x; the arena's
@@ -46,17 +52,18 @@ views=(
   "sibenik_pillars|$sibenik|0 1.65 0 -90 -10"
 )
 # (No crates, barrels or targets in view: the reference traces brushes and misc_models only.)
-# name | game arguments. The order is bench/timedemo_ao.replay's segment order after `off`.
+# name | game arguments | the knob that sets its radius | which radius its defaults are (local or
+# large: the frame the game shows). The order is bench/timedemo_ao.replay's segment order after `off`.
 configs=(
-  "crytek|--ssao crytek"
-  "hemisphere|--ssao hemisphere"
-  "cone|--ssao cone"
-  "horizon|--ssao horizon"
-  "heightfield|--ssao heightfield"
-  "gtao|--ssao gtao"
-  "combined|--ssao combined"
-  "horizon-half|--ssao horizon --ssao-resolution half"
-  "hemisphere-full-32|--ssao hemisphere --ssao-resolution full --ssao-samples 32"
+  "crytek|--ssao crytek|--ssao-radius|local"
+  "hemisphere|--ssao hemisphere|--ssao-radius|local"
+  "cone|--ssao cone|--ssao-radius|local"
+  "horizon|--ssao horizon|--ssao-radius|local"
+  "heightfield|--ssao heightfield|--ssao-radius|local"
+  "gtao|--ssao gtao|--ssao-radius|local"
+  "combined|--ssao combined|--ssao-large-radius|large"
+  "horizon-half|--ssao horizon --ssao-resolution half|--ssao-radius|local"
+  "hemisphere-full-32|--ssao hemisphere --ssao-resolution full --ssao-samples 32|--ssao-radius|local"
 )
 # VIEWS= / CONFIGS= filters: names separated by spaces or commas.
 picked() { [ -z "$2" ] || [[ " ${2//,/ } " == *" $1 "* ]]; }
@@ -65,10 +72,10 @@ render() {
   local name=$1 level=$2 pose=$3 crouch=$4 png=$5; shift 5
   if [ "$crouch" = crouch ]; then
     printf 'obscura-replay 1\nlevel %s\nseed 1\nresolution %s %s\nstart %s\n0 key lctrl down\n20 end\n' \
-      "$level" $W $H "$pose" > "$out/$name.replay"
+      "$level" $GW $GH "$pose" > "$out/$name.replay"
     "$game" --replay "$out/$name.replay" --hud off "$@" --screenshot "$png"
   else
-    "$game" --headless --ticks 1 --width $W --height $H --level "$level" --start-pose "$pose" --hud off "$@" --screenshot "$png"
+    "$game" --headless --ticks 1 --width $GW --height $GH --level "$level" --start-pose "$pose" --hud off "$@" --screenshot "$png"
   fi | sed -n 's/^camera-pose //p'
 }
 # The image of configuration $2 at mode radius $3 in view $1 (no suffix at the local radius).
@@ -97,9 +104,9 @@ for v in "${views[@]}"; do
   seen=""
   for r in $(printf '%s\n' "$RL" "$RG" | uniq); do
     for c in "${ran_configs[@]}"; do
-      IFS='|' read -r cname cargs <<<"$c"
+      IFS='|' read -r cname cargs knob _ <<<"$c"
       # shellcheck disable=SC2086
-      p=$(render "$name" "$level" "$pose" "$crouch" "$(image "$name" "$cname" "$r")" $cargs --ssao-radius "$r" \
+      p=$(render "$name" "$level" "$pose" "$crouch" "$(image "$name" "$cname" "$r")" $cargs "$knob" "$r" \
         --ssao-intensity "$I" --ao-only)
       if [ -z "$seen" ]; then seen=$p; echo "ao_table: $name: asked '$pose', camera at '$p'" >&2
       elif [ "$p" != "$seen" ]; then echo "ao_table: $name: $cname saw '$p', not '$seen'" >&2; exit 1; fi
@@ -113,7 +120,7 @@ for v in "${views[@]}"; do
       for c in "${ran_configs[@]}"; do compares+=(--compare "$(image "$name" "${c%%|*}" "$r")"); done
     done
     refimg="$out/${name}_reference.png"; [ "$tr" = "$RL" ] || refimg="$out/${name}_reference_r$tr.png"
-    "$ref" --level "$level" --pose "$seen" --width $W --height $H --radius "$tr" --rays "$RAYS" --out "$refimg" \
+    "$ref" --level "$level" --pose "$seen" --width $W --height $H --scale "$S" --radius "$tr" --rays "$RAYS" --out "$refimg" \
       --compare-off "${compares[@]}" 2>/dev/null | while read -r _ mae rmse bias px omae obias opx oshare file; do
         file=${file#file=}
         if [ "$file" = off ]; then cname=off r=-
@@ -130,6 +137,7 @@ done
 
 table="$out/table.md"
 /usr/bin/python3 tools/aoref/ao_table_format.py "$results" --local "$RL" --large "$RG" --intensity "$I" --rays "$RAYS" \
+  --scale "$S" --defaults "$(for c in "${configs[@]}"; do IFS='|' read -r n _ _ d <<<"$c"; printf '%s=%s ' "$n" "$d"; done)" \
   --views "$(for v in "${views[@]}"; do printf '%s ' "${v%%|*}"; done)" \
   --configs "$(for c in "${configs[@]}"; do printf '%s ' "${c%%|*}"; done)" > "$table"
 
@@ -156,16 +164,23 @@ if [ -z "${NO_COST:-}" ]; then
 fi
 cat "$table"
 
-# The side-by-side images of the modes (for the READMEs): the lit scene, each configuration's AO and
-# the ray-traced reference at the local radius, in a grid of 3 columns, for the courtyard and the
-# Sibenik nave (when they and every configuration ran).
+# The side-by-side images of the modes (for the READMEs): the lit scene, each configuration's AO
+# at its defaults (the frame the game shows) and the ray-traced references at both radii, scaled to
+# the scored size, in a grid of 3 columns, for the courtyard and the Sibenik nave (when they and
+# every configuration ran).
 [ ${#ran_configs[@]} -eq ${#configs[@]} ] || exit 0
+small() { convert "$1" -scale "${W}x${H}" "$out/small_$(basename "$1")"; echo "$out/small_$(basename "$1")"; }
 for v in "${ran_views[@]}"; do
   IFS='|' read -r name level pose crouch <<<"$v"
   case "$name" in courtyard | sibenik_nave) ;; *) continue ;; esac
   render "$name" "$level" "$pose" "$crouch" "$out/${name}_scene.png" >/dev/null
-  images=("$out/${name}_scene.png")
-  for c in "${configs[@]}"; do images+=("$out/${name}_${c%%|*}.png"); done
-  build/tools/aoref/obscura_side_by_side --columns 3 "$out/ao_modes_$name.png" "${images[@]}" "$out/${name}_reference.png"
-  echo "side by side: $out/ao_modes_$name.png (scene | ${configs[*]%%|*} | ray-traced reference)"
+  images=("$(small "$out/${name}_scene.png")")
+  for c in "${configs[@]}"; do
+    IFS='|' read -r cname _ _ d <<<"$c"
+    r=$RL; [ "$d" = large ] && r=$RG
+    images+=("$(small "$(image "$name" "$cname" "$r")")")
+  done
+  build/tools/aoref/obscura_side_by_side --columns 3 "$out/ao_modes_$name.png" "${images[@]}" \
+    "$out/${name}_reference.png" "$out/${name}_reference_r$RG.png"
+  echo "side by side: $out/ao_modes_$name.png (scene | ${configs[*]%%|*} at their defaults | reference $RL m, $RG m)"
 done
