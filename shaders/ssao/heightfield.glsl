@@ -41,18 +41,21 @@ vec2 rayPattern(vec2 pixel)
     return (vec2(float((2 * p.x + p.y) % 5), float((p.x + 2 * p.y) % 5)) + 0.5) / 5.0;
 }
 
-// Visibility (1 = open) of world point wp with world normal wn through what the height map holds
-// between `inner` and `outer` metres from it, -1 where the map says nothing: under a roof (the map
-// over the point holds the roof's top, and says nothing about what lies between the roof and it),
-// or where it holds nothing at all (no map baked, or a model's surface the map leaves out: Sibenik
-// is one model, and every ray would have gone unblocked).
+// Visibilities (1 = open) of world point wp with world normal wn through what the height map holds:
+// x over 0..`inner` metres, y beyond it out to `outer` (the share of the rays open to `inner` that
+// stay open to `outer`, so x * y is the visibility over 0..outer); (-1, -1) where the map says
+// nothing: under a roof (the map over the point holds the roof's top, and says nothing about what
+// lies between the roof and it), or where it holds nothing at all (no map baked, or a model's
+// surface the map leaves out: Sibenik is one model, and every ray would have gone unblocked).
 // `rays` rays, cosine-weighted about the normal (a Fibonacci spiral on the unit disc lifted to the
-// hemisphere: each ray weighs the same), the spiral turned per pixel by rayPattern.
-float heightVisibility(vec3 wp, vec3 wn, float inner, float outer, int rays)
+// hemisphere: each ray weighs the same), the spiral turned per pixel by rayPattern; kLargeSteps
+// steps over each range. One march serves both ranges: a ray blocked within `inner` is not marched
+// on (with outer <= inner, y is 1).
+vec2 heightVisibility(vec3 wp, vec3 wn, float inner, float outer, int rays)
 {
     vec3 o = wp + wn * kRoofTestOffset;
     float over = heightAt(o);
-    if (over > o.y + kRoofMargin || over < kNothingBelow) return -1.0;
+    if (over > o.y + kRoofMargin || over < kNothingBelow) return vec2(-1.0);
     vec3 start = wp + wn * kRayLift;
     vec3 a = abs(wn.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
     vec3 t = normalize(cross(a, wn));
@@ -60,18 +63,24 @@ float heightVisibility(vec3 wp, vec3 wn, float inner, float outer, int rays)
     vec2 pattern = rayPattern(gl_FragCoord.xy);
     float turn = 6.2831853 * pattern.x;
     float jitter = pattern.y;
-    int open = 0;
+    int openNear = 0, openFar = 0;
     for (int i = 0; i < 32; ++i) {
         if (i >= rays) break;
         float r = sqrt((float(i) + 0.5) / float(rays));
         float phi = turn + 2.3999632 * float(i);  // the golden angle
         vec3 dir = t * (r * cos(phi)) + b * (r * sin(phi)) + wn * sqrt(max(1.0 - r * r, 0.0));
         bool blocked = false;
-        for (int s = 0; s < kLargeSteps; ++s) {
-            vec3 q = start + dir * mix(inner, outer, (float(s) + jitter) / float(kLargeSteps));
-            if (heightAt(q) > q.y) { blocked = true; break; }
+        for (int s = 0; s < kLargeSteps && !blocked; ++s) {
+            vec3 q = start + dir * (inner * (float(s) + jitter) / float(kLargeSteps));
+            blocked = heightAt(q) > q.y;
         }
-        if (!blocked) ++open;
+        if (blocked) continue;
+        ++openNear;
+        for (int s = 0; s < kLargeSteps && !blocked && outer > inner; ++s) {
+            vec3 q = start + dir * mix(inner, outer, (float(s) + jitter) / float(kLargeSteps));
+            blocked = heightAt(q) > q.y;
+        }
+        if (!blocked) ++openFar;
     }
-    return float(open) / float(rays);
+    return vec2(float(openNear) / float(rays), openNear > 0 ? float(openFar) / float(openNear) : 1.0);
 }
