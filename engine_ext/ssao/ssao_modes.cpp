@@ -12,6 +12,10 @@ const std::vector<std::string>& modeNames() {
 
 bool readsHeightMap(const std::string& mode) { return mode == "heightfield" || mode == "combined"; }
 
+double truthRadius(const std::string& mode, double radius, double largeRadius) {
+    return mode == "combined" && largeRadius > radius ? largeRadius : radius;
+}
+
 bool isMode(const std::string& name) {
     const auto& m = modeNames();
     return std::find(m.begin(), m.end(), name) != m.end();

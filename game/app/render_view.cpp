@@ -224,7 +224,7 @@ void RenderView::applyAo(const AoSettings& a) {
     k.resolution = a.resolution;
     ao_->setKnobs(k);
     ao_->setMode(a.mode);  // the frame rebuilds its chain at the next frame
-    aoRadius_ = a.radius;  // the truth traces at the mode's radius
+    aoRadius_ = ssao::truthRadius(a.mode, a.radius, a.largeRadius);  // the truth traces what the mode estimates
     if (truth_) truth_->aoChanged();
     aoMode_ = a.mode;
     rebakeHeightMapIfStale();

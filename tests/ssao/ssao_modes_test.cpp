@@ -28,3 +28,12 @@ TEST(SsaoModes, TheHeightMapModesAreNamed) {
     EXPECT_FALSE(readsHeightMap("horizon"));
     EXPECT_FALSE(readsHeightMap("off"));
 }
+
+TEST(SsaoModes, TheTruthKeyTracesTheRadiusTheModeEstimates) {
+    // combined answers to its large radius (V_small(0..r) x V_large(r..R) is the truth at R)...
+    EXPECT_DOUBLE_EQ(truthRadius("combined", 0.6, 2.0), 2.0);
+    // ...and to the small one when the large does not reach past it (its small term alone).
+    EXPECT_DOUBLE_EQ(truthRadius("combined", 0.6, 0.6), 0.6);
+    EXPECT_DOUBLE_EQ(truthRadius("combined", 1.0, 0.5), 1.0);
+    for (const char* mode : {"off", "horizon", "gtao", "heightfield"}) EXPECT_DOUBLE_EQ(truthRadius(mode, 0.6, 2.0), 0.6);
+}
