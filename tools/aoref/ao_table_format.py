@@ -113,7 +113,7 @@ def main():
     k = int(a.scale)
     size = (f"scored at 320×180: the game at {320 * k}×{180 * k} and the truth traced at the same pixels, "
             f"{int(a.rays) // (k * k)} rays each, both averaged over {k}×{k} blocks" if k > 1 else "320×180")
-    print(f"{size}; reference {a.rays} rays per scored pixel; intensity {a.intensity}, 16 samples at quarter "
+    print(f"{size}; reference {a.rays} rays per scored pixel; intensity {a.intensity}, the default 32 samples at quarter "
           f"resolution unless named. Each cell: **whole-frame MAE / occluded-region MAE / occluded-region bias** (mode − "
           f"reference; + is too light). The occluded region: pixels whose reference AO < 0.95 (their share of the pixels "
           f"that see geometry in the second column). `off` is an all-white frame scored by the same code.")
