@@ -93,14 +93,14 @@ taps)
 ao-cycle)
     start
     # O steps forwards, a quick Shift+O (Shift released with the O) backwards: from the default
-    # horizon, O -> heightfield, Shift+O -> horizon, Shift+O -> cone. With Shift lost it would
-    # end on combined (horizon -> heightfield -> gtao -> combined).
+    # combined, O -> off (it wraps), Shift+O -> combined, Shift+O -> gtao. With Shift lost it
+    # would end on hemisphere (combined -> off -> crytek -> hemisphere).
     tap key o
     tap key shift+o
     tap key shift+o
     settle
     finish
-    expect ao cone
+    expect ao gtao
     ;;
 panel-mouse)
     start --debug-panel
