@@ -1,11 +1,8 @@
 #version 330 core
 // Ground-truth-based AO (Jimenez, Wu, Pesce, Jarabo, "Practical Real-Time Strategies for Accurate
 // Indirect Occlusion", SIGGRAPH 2016): the cosine-weighted visibility of the hemisphere, integrated
-// per slice. Each of kGtaoSlices screen-space directions (the per-pixel random vector, turned by
-// 180/kGtaoSlices degrees each: no trigonometry for the directions) is the plane through V and that
-// direction; along it the horizon is searched both ways out to the projected radius
-// (sampleCount steps in all), the normal is projected into the slice, and the visibility between
-// the two horizons is the paper's analytic inner integral (gtao.glsl, engine_ext/ssao/gtao.h).
+// per slice: the search is gtao_search.glsl (shared with the combined mode's small scale), the slice
+// math gtao.glsl (mirrored by engine_ext/ssao/gtao.h).
 in vec2 vUv;
 out vec4 fragColour;
 #include "ssao_common.glsl"

@@ -44,14 +44,11 @@ float highestElevation(vec4 p, vec3 n, vec2 reachUv, int steps, float jitter, fl
         float t = (float(s) + jitter) / float(steps);
         vec2 uv = vUv + reachUv * t;
         if (!onScreen(uv)) break;
-        vec4 q = viewPosition(uv);
-        if (q.w < 0.5) continue;
-        vec3 h = q.xyz - p.xyz;
-        float dist = length(h);
-        if (dist < 1e-4) continue;
-        float falloff = clamp((reach - dist) / (kFalloffShare * reach), 0.0, 1.0);
+        vec4 o = offsetTo(uv, p);
+        if (o.w <= 0.0) continue;
+        float falloff = clamp((reach - o.w) / (kFalloffShare * reach), 0.0, 1.0);
         if (falloff <= 0.0) continue;  // out of range: neither an occluder nor a sign that one ended
-        float e = dot(h / dist, n) * falloff;
+        float e = dot(o.xyz, n) * falloff;
         best = e > best ? e : mix(best, max(e, 0.0), kThicknessBlend);
     }
     return best;

@@ -27,7 +27,7 @@ const float kRayLift = 0.1;
 const float kRoofMargin = 0.05;
 // Metres: below this the map holds "nothing here" (ssao_compositor.cpp's kNoHeight, -1e4).
 const float kNothingBelow = -1e3;
-const int kLargeSteps = 8;       // steps a ray: the seed's ~8 (a step of 0.2 m over 0.6..2 m)
+const int kLargeSteps = 8;       // steps a ray a range: the seed's ~8 (0.075 m over 0..0.6 m, 0.2 m over 0.6..2 m)
 
 // The rays' per-pixel turn and step offset, in [0, 1): a 5x5 interleaved pattern in which any 5
 // consecutive pixels of a row or of a column hold all 5 values of each (turn = 2x + y, offset =

@@ -25,14 +25,11 @@ float horizonOcclusionWithin(vec4 p, vec3 n, vec3 rnd, float reach)
             if (s >= steps) break;
             vec2 uv = vUv + dir * reachUv * ((float(s) + jitter) / float(steps));
             if (!onScreen(uv)) break;
-            vec4 q = viewPosition(uv);
-            if (q.w < 0.5) continue;
-            vec3 h = q.xyz - p.xyz;
-            float dist = length(h);
-            if (dist < 1e-4) continue;
+            vec4 o = offsetTo(uv, p);
+            if (o.w <= 0.0) continue;
             // sin(elevation) above the tangent plane, less a small bias against flat-surface noise
-            float elevation = dot(h / dist, n) - 0.1;
-            float falloff = clamp(1.0 - (dist * dist) / (reach * reach), 0.0, 1.0);
+            float elevation = dot(o.xyz, n) - 0.1;
+            float falloff = clamp(1.0 - (o.w * o.w) / (reach * reach), 0.0, 1.0);
             best = max(best, elevation * falloff);
         }
         occ += best;

@@ -46,6 +46,18 @@ vec4 viewPosition(vec2 uv)
     return vec4(ndc / projScale * depth, -depth, depth > 0.0 ? 1.0 : 0.0);
 }
 
+// The horizon searches' sample: the direction from view-space point p to the visible surface at uv
+// (xyz, unit) and its distance (w); w = 0 where there is nothing (sky) or the surface is p itself,
+// and the search skips the sample.
+vec4 offsetTo(vec2 uv, vec4 p)
+{
+    vec4 q = viewPosition(uv);
+    if (q.w < 0.5) return vec4(0.0);
+    vec3 h = q.xyz - p.xyz;
+    float dist = length(h);
+    return dist < 1e-4 ? vec4(0.0) : vec4(h / dist, dist);
+}
+
 vec3 viewNormal(vec2 uv)
 {
     return normalize(texelFetch(gbufferNormal, gbufferTexel(uv), 0).xyz * 2.0 - 1.0);
