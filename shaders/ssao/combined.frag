@@ -17,27 +17,20 @@ uniform float largeRadius;       // metres: the large scale's reach (ssao_knobs.
 uniform float heightRays;        // rays per pixel through the height map
 uniform float visibilityPower;   // intensity / its default (ssao_compositor.cpp), as the gtao mode's
 
-// The small scale, as visibility (1 = open): GTAO within the radius and, where the height map
-// knows the ground (no roof: map.x >= 0), its rays over the same 0..r, the lower of the two: the
+// The small scale, as visibility (1 = open): GTAO within the radius (`screen`) and, where the height
+// map knows the ground (no roof: map.x >= 0), its rays over the same 0..r, the lower of the two: the
 // screen misses what lies off it or behind the foreshortened floor, the map misses what lies under
 // an overhang, and an occluder both see is counted once (the heightfield mode's merge, with the
 // offset roof test). The map's term took the 0.6 m table's outdoor views from 2.2-2.7x to
 // 5.3-6.6x better than off (engine_ext/ssao/README.md).
-float smallVisibility(vec4 p, vec3 n, vec3 rnd, vec2 map)
-{
-    float screen = gtaoVisibilityWithin(p, n, rnd, radius);
-    return map.x < 0.0 ? screen : min(screen, map.x);
-}
+float smallVisibility(float screen, vec2 map) { return map.x < 0.0 ? screen : min(screen, map.x); }
 
-// Under a roof: the screen's visibility beyond the radius, V(0..R) / V(0..r), the share of what is
-// open to r that stays open to R. Horizons do not add up over ranges (a ceiling seen within r and
-// beyond it is one horizon, the higher one), so the product with a horizon over r..R alone
-// darkened a wall-ceiling crease twice (0.17 against the 2 m truth's 0.5 on tests/ssao's room).
-float screenVisibilityBeyond(vec4 p, vec3 n, vec3 rnd, float small)
-{
-    float toLarge = gtaoVisibilityWithin(p, n, rnd, largeRadius);
-    return clamp(toLarge / max(small, 1e-3), 0.0, 1.0);
-}
+// Under a roof: the screen's visibility beyond the radius, V(0..R) / V(0..r) (screen.y / screen.x,
+// one march a side for both), the share of what is open to r that stays open to R. Horizons do not
+// add up over ranges (a ceiling seen within r and beyond it is one horizon, the higher one), so the
+// product with a horizon over r..R alone darkened a wall-ceiling crease twice (0.17 against the 2 m
+// truth's 0.5 on tests/ssao's room).
+float screenVisibilityBeyond(vec2 screen, float small) { return clamp(screen.y / max(small, 1e-3), 0.0, 1.0); }
 
 void main()
 {
@@ -49,9 +42,12 @@ void main()
     vec3 wn = normalize(mat3(inverseView) * n);
     // The map's rays over 0..r and r..R in one march.
     vec2 map = heightVisibility(wp, wn, radius, largeRadius, int(heightRays));
-    float small = clamp(smallVisibility(p, n, rnd, map), 0.0, 1.0);
+    // The screen's far reach only where the map has no answer for the large scale.
+    bool screenLarge = largeRadius > radius && map.y < 0.0;
+    vec2 screen = gtaoVisibilities(p, n, rnd, radius, screenLarge ? largeRadius : radius);
+    float small = clamp(smallVisibility(screen.x, map), 0.0, 1.0);
     float large = 1.0;
-    if (largeRadius > radius) large = map.y >= 0.0 ? map.y : screenVisibilityBeyond(p, n, rnd, small);
+    if (largeRadius > radius) large = screenLarge ? screenVisibilityBeyond(screen, small) : map.y;
     float v = clamp(small * large, 1e-4, 1.0);  // pow(0, 0) is undefined (intensity 0)
     fragColour = aoResult(pow(v, visibilityPower), -p.z);
 }

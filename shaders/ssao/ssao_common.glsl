@@ -34,17 +34,32 @@ float depthAt(vec2 uv)
     return texelFetch(gbufferDepth, gbufferTexel(uv), 0).r;
 }
 
-// The view-space position seen at uv (projectToUv's inverse); w = 0 for sky. The position is
-// rebuilt at the centre of the depth texel actually read: a half-resolution pass's pixel centre
-// falls between full-resolution texels, and rebuilding there tilts sloped surfaces into bands.
-vec4 viewPosition(vec2 uv)
+// View space from the depth texture's texels: the point seen at texel t at linear depth d is
+// (vec2(t) * scale + bias) * d, -d) (projectToUv's inverse at the texel's centre, with the flip
+// folded into the y scale). Hoisted out of the horizon searches' loops, where it replaced a divide,
+// a floor and two textureSize calls per step (ssao README, "GTAO's cost").
+struct TexelFrame { ivec2 size; vec2 scale; vec2 bias; };
+TexelFrame texelFrame()
 {
-    vec2 size = vec2(textureSize(gbufferDepth, 0));
-    uv = (floor(uv * size) + 0.5) / size;
-    float depth = depthAt(uv);
-    vec2 ndc = vec2(uv.x, flipY > 0.5 ? 1.0 - uv.y : uv.y) * 2.0 - 1.0;
-    return vec4(ndc / projScale * depth, -depth, depth > 0.0 ? 1.0 : 0.0);
+    TexelFrame f;
+    f.size = textureSize(gbufferDepth, 0);
+    vec2 size = vec2(f.size);
+    vec2 flip = vec2(1.0, flipY > 0.5 ? -1.0 : 1.0);
+    f.scale = flip * 2.0 / (size * projScale);
+    f.bias = flip * (1.0 / size - 1.0) / projScale;
+    return f;
 }
+// The view-space position of texel t's surface; w = 0 for sky (depth 0).
+vec4 viewPositionAtTexel(TexelFrame f, ivec2 t)
+{
+    float depth = texelFetch(gbufferDepth, t, 0).r;
+    return vec4((vec2(t) * f.scale + f.bias) * depth, -depth, depth > 0.0 ? 1.0 : 0.0);
+}
+
+// The view-space position seen at uv; w = 0 for sky. The position is rebuilt at the centre of the
+// depth texel actually read: a half-resolution pass's pixel centre falls between full-resolution
+// texels, and rebuilding there tilts sloped surfaces into bands.
+vec4 viewPosition(vec2 uv) { return viewPositionAtTexel(texelFrame(), gbufferTexel(uv)); }
 
 // The horizon searches' sample: the direction from view-space point p to the visible surface at uv
 // (xyz, unit) and its distance (w); w = 0 where there is nothing (sky) or the surface is p itself,
