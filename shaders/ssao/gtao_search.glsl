@@ -83,7 +83,7 @@ vec2 highestElevations(TexelFrame f, vec4 p, vec3 n, vec2 side, float jitter, fl
     for (int s = 0; s < SSAO_MAX_SAMPLES; ++s) {
         if (s >= steps) break;
         vec2 at = start + perMetre * (reach * (float(s) + jitter) / float(steps));
-        if (any(lessThan(at, vec2(0.0))) || any(greaterThan(at, size))) return best;  // onScreen's test
+        if (!onScreenTexels(at, size)) return best;
         vec2 hit = elevationAt(f, p, n, at);
         if (hit.y <= 0.0) continue;
         keepHighest(best.x, hit, reach);
@@ -92,7 +92,7 @@ vec2 highestElevations(TexelFrame f, vec4 p, vec3 n, vec2 side, float jitter, fl
     for (int s = 0; s < SSAO_MAX_SAMPLES; ++s) {
         if (s >= farSteps) break;
         vec2 at = start + perMetre * mix(reach, farReach, (float(s) + jitter) / float(farSteps));
-        if (any(lessThan(at, vec2(0.0))) || any(greaterThan(at, size))) break;
+        if (!onScreenTexels(at, size)) break;
         vec2 hit = elevationAt(f, p, n, at);
         if (hit.y > 0.0) keepHighest(best.y, hit, farReach);
     }

@@ -21,6 +21,8 @@ vec2 projectToUv(vec3 p)
 // past the border is unknown, and a depth read clamped to the edge texel but placed at the
 // unclamped uv is a surface that is not there (cone darkened the whole border that way).
 bool onScreen(vec2 uv) { return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))); }
+// The same test in texel-space coordinates (uv * size), for the marches that step in texels.
+bool onScreenTexels(vec2 at, vec2 size) { return all(greaterThanEqual(at, vec2(0.0))) && all(lessThanEqual(at, size)); }
 
 // The G-buffer texel under uv. texelFetch: a plain load, no filtering (several times cheaper than
 // texture() on llvmpipe, and the depth must not be filtered anyway).
