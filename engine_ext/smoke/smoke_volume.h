@@ -105,6 +105,21 @@ public:
     // built cells (walls, roofs) opaque like computeTransmittance. 1 under open sky, ~0 under a roof.
     void computeSkyVisibility();
     const std::vector<float>& skyVisibility() const;  // grid().cells() values; 1 until computed
+    // Transmittance towards a point light at `lamp` (world; inside the grid or not), for every
+    // cell into `out` (grid().cells() values, x fastest): exp(-shadowSigma * the integral of
+    // density along the segment from the cell's centre to the lamp, inside the grid), built cells
+    // opaque as in computeTransmittance except within kLampClearance of the lamp (a lamp hangs on
+    // its fixture). Swept outwards from the lamp in the six pyramids of its dominant axes, each
+    // plane taking the plane before bilinearly where the ray to the lamp crosses it: one pass over
+    // each pyramid, no ray marched per cell. For the renderer (the lamps and the signs' lamps
+    // shadowed by the smoke they light); the solver's state is not touched.
+    void computeLampTransmittance(const Vec3& lamp, std::vector<float>& out) const;
+    static constexpr double kLampClearance = 0.5;  // metres: two cells, a fixture's size
+    // Up to 4 lamps' transmittances packed as RGBA32F per cell (x fastest), channel c = lamps[c],
+    // unused channels 1; a wall cell of the export's skin (exportRGBFloat) takes the value of the
+    // free cell its density came from, so a trilinear sample at a wall is lit like the smoke
+    // beside it. What the renderer uploads beside exportRGBFloat.
+    void exportLampTransmittance(const std::vector<Vec3>& lamps, std::vector<float>& out) const;
 
     // Packed for a 3D texture of grid().nx x ny x nz (x fastest, then y, then z). The density
     // exported is the fluid cells' own; a built cell (wall, floor, ceiling, mesh) next to free

@@ -292,6 +292,103 @@ void SmokeVolume::computeSkyVisibility() {
 
 const std::vector<float>& SmokeVolume::skyVisibility() const { return impl_->skyVisibility; }
 
+void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>& out) const {
+    const SmokeState& s = impl_->state;
+    const GridInfo& g = s.grid;
+    out.assign(g.cells(), 1.f);
+    const Vec3 l = g.toCellCoords(lamp);
+    if (!std::isfinite(l.x + l.y + l.z)) return;
+    const double lc[3] = {l.x, l.y, l.z};
+    const int n[3] = {g.nx, g.ny, g.nz};
+    const std::size_t stride[3] = {1, static_cast<std::size_t>(g.nx), static_cast<std::size_t>(g.nx) * g.ny};
+    const float* den = s.density.data();
+    const std::uint8_t* built = s.voxelSolid.data();
+    const float sigmaH = static_cast<float>(impl_->settings.shadowSigma * g.cellSize);  // optical depth a cell of density 1
+    constexpr float kOpaque = 12.f;  // as computeTransmittance: a built cell passes e^-12
+    const double clearance = kLampClearance / g.cellSize;  // cells
+    // Pyramid p: the cells whose dominant offset from the lamp is along axis a = p / 2, on the
+    // side sgn (the first axis wins a tie). Its planes are swept outwards, each whole (a cell at
+    // the pyramid's edge reads the plane before up to a cell outside it), and each writes only its
+    // own cells: every cell once, whatever the thread count.
+    auto sweep = [&](int p) {
+        const int a = p / 2, b = (a + 1) % 3, c = (a + 2) % 3, sgn = (p % 2) ? 1 : -1;
+        const int nb = n[b], nc = n[c];
+        std::vector<float> prev(static_cast<std::size_t>(nb) * nc, 0.f), cur(prev.size());
+        int first = sgn > 0 ? std::max(0, static_cast<int>(std::floor(lc[a])) + 1)
+                            : std::min(n[a] - 1, static_cast<int>(std::ceil(lc[a])) - 1);
+        bool havePrev = false;  // prev holds the plane before, inside the grid
+        for (int sa = first; sa >= 0 && sa < n[a]; sa += sgn) {
+            const double D = std::fabs(sa - lc[a]);  // > 0: cells off the lamp along a
+            const int pa = sa - sgn;                 // the plane before, towards the lamp
+            const bool fromLamp = D <= 1.0;          // the plane before is at or past the lamp
+            const double shrink = (D - 1.0) / D;     // where the ray to the lamp crosses plane pa
+            for (int yc = 0; yc < nc; ++yc) {
+                const double dc = yc - lc[c];
+                for (int xb = 0; xb < nb; ++xb) {
+                    const double db = xb - lc[b];
+                    const std::size_t cell = sa * stride[a] + xb * stride[b] + yc * stride[c];
+                    const double dist = std::sqrt(D * D + db * db + dc * dc);  // cells to the lamp
+                    const float rho = den[cell];
+                    float tau;
+                    if (fromLamp) {
+                        tau = sigmaH * static_cast<float>(dist) * rho;  // the lamp's own neighbourhood
+                    } else {
+                        const float seg = sigmaH * static_cast<float>(dist / D);  // one plane's length of ray
+                        float tauQ = 0.f, rhoQ = 0.f;                            // outside the grid: no smoke
+                        const double ub = lc[b] + db * shrink, uc = lc[c] + dc * shrink;
+                        // A crossing more than half a cell outside plane pa: the ray came in from
+                        // outside the grid, where there is no smoke.
+                        const bool inside = ub > -0.5 && ub < nb - 0.5 && uc > -0.5 && uc < nc - 0.5;
+                        if (havePrev && inside) {
+                            const double qb = std::clamp(ub, 0.0, nb - 1.0);
+                            const double qc = std::clamp(uc, 0.0, nc - 1.0);
+                            const int b0 = std::min(static_cast<int>(qb), nb - 2 < 0 ? 0 : nb - 2);
+                            const int c0 = std::min(static_cast<int>(qc), nc - 2 < 0 ? 0 : nc - 2);
+                            const int b1 = std::min(b0 + 1, nb - 1), c1 = std::min(c0 + 1, nc - 1);
+                            const float fb = static_cast<float>(qb - b0), fc = static_cast<float>(qc - c0);
+                            auto bilinear = [&](auto&& at) {
+                                return kernels::lerp(kernels::lerp(at(b0, c0), at(b1, c0), fb),
+                                                     kernels::lerp(at(b0, c1), at(b1, c1), fb), fc);
+                            };
+                            tauQ = bilinear([&](int x, int y) { return prev[static_cast<std::size_t>(y) * nb + x]; });
+                            rhoQ = bilinear([&](int x, int y) { return den[pa * stride[a] + x * stride[b] + y * stride[c]]; });
+                        }
+                        tau = tauQ + seg * 0.5f * (rho + rhoQ);
+                    }
+                    const double chebyshev = std::max(D, std::max(std::fabs(db), std::fabs(dc)));
+                    if (built[cell] == kVoxelBuilt && chebyshev > clearance) tau += kOpaque;
+                    cur[static_cast<std::size_t>(yc) * nb + xb] = tau;
+                    // This pyramid's cell: its offset along a is the largest (the lower axis on a tie).
+                    const double off[3] = {a == 0 ? D : (b == 0 ? db : dc), a == 1 ? D : (b == 1 ? db : dc),
+                                           a == 2 ? D : (b == 2 ? db : dc)};
+                    bool mine = true;
+                    for (int x = 0; x < 3 && mine; ++x)
+                        if (x != a) mine = x < a ? std::fabs(off[x]) < D : std::fabs(off[x]) <= D;
+                    if (mine) out[cell] = expNeg(tau);
+                }
+            }
+            prev.swap(cur);
+            havePrev = true;
+        }
+    };
+    impl_->pool->parallelFor(6, [&](int p0, int p1) {
+        for (int p = p0; p < p1; ++p) sweep(p);
+    });
+}
+
+void SmokeVolume::exportLampTransmittance(const std::vector<Vec3>& lamps, std::vector<float>& out) const {
+    const std::size_t n = impl_->state.grid.cells();
+    out.assign(4 * n, 1.f);
+    if (lamps.empty()) return;
+    std::vector<std::size_t>& source = impl_->exportSource;
+    exportedDensity(impl_->state, impl_->exportScratch, &source);
+    std::vector<float> T;
+    for (std::size_t l = 0; l < lamps.size() && l < 4; ++l) {
+        computeLampTransmittance(lamps[l], T);
+        for (std::size_t c = 0; c < n; ++c) out[4 * c + l] = T[source[c]];
+    }
+}
+
 void SmokeVolume::exportRG8(std::vector<std::uint8_t>& out) const {
     const SmokeState& s = impl_->state;
     const std::size_t n = s.grid.cells();
