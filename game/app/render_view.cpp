@@ -130,6 +130,10 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
     smoke_ = std::make_unique<smoke::SmokeRender>();
     smoke_->setLights(*scene_);  // the level's point lights (LevelGeometry made them above) light the smoke too
+    std::vector<smoke::SmokeRender::PointLight> signLamps;  // shadowed by the smoke in the signs' shafts
+    for (const signs::SignSpec& s : session.signs().specs())
+        signLamps.push_back({render::toOgre(s.lamp), render::toOgre(s.lightColour * s.intensity), static_cast<float>(s.range)});
+    smoke_->setSignLamps(std::move(signLamps));
     // Room for every decal the session can hold: the ring's cap and the fixed ones (signs).
     decals_ = std::make_unique<decals::DecalRender>(*scene_, session.decals().set().capacity(), session.decals().signTiles());
     frame_->add(*decals_);

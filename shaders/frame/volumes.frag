@@ -3,7 +3,8 @@
 // along each view ray against the G-buffer's linear depth, with ONE transmittance, so a medium in
 // front dims what lies behind it and nothing is counted twice:
 //   smoke  the grenades' volumes (engine_ext/smoke, shaders/smoke/smoke_march.glsl): absorbs and
-//          scatters the sun, the sky, the level's lamps and the signs' light;
+//          scatters the sun, the sky, the level's lamps and the signs' light, and shadows the
+//          brightest lamps and the signs' lamps (its lamp maps, smokeLampTransmittance);
 //   haze   a thin scatterer of the signs' light (engine_ext/signs, shaders/signs/sign_march.glsl).
 // The ray's pieces inside any smoke box or sign beam are merged into disjoint segments, marched
 // front to back with a per-pixel jittered start. Per step of length dt, with extinction s (smoke) and
@@ -58,6 +59,14 @@ void main()
     // Interleaved gradient noise (Jimenez 2014): the start jitter, stable from frame to frame.
     float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
     bool signs = signCount > 0.5;
+    // Each bound sign's channel in the smoke's lamp maps, matched by its lamp's position (the
+    // signs and the smoke pick their lamps apart); -1: not shadowed.
+    int signChannel[SIGN_MAX_LIGHTS];
+    for (int i = 0; i < SIGN_MAX_LIGHTS; ++i) {
+        signChannel[i] = -1;
+        for (int c = 0; c < 4; ++c)
+            if (float(c) < smokeShadowedCount && distance(smokeShadowedPosition[c], signLamp[i].xyz) < 1e-3) signChannel[i] = c;
+    }
     for (int g = 0; g < VOLUME_MAX_SEGMENTS; ++g) {
         if (g >= merged || transmittance < 0.003) break;
         float t0 = segT0[g], t1 = segT1[g];
@@ -66,8 +75,11 @@ void main()
         for (int s = 0; s < kVolumeMaxSteps; ++s) {
             if (s >= steps) break;
             vec3 p = origin + dir * (t0 + (float(s) + jitter) * dt);
-            vec4 smoke = smokeAt(p, dir);
-            vec3 signLight = signs ? signScatterAt(p, dir) : vec3(0.0);
+            vec4 lampT = smokeLampTransmittance(p);
+            vec4 smoke = smokeAt(p, dir, lampT);
+            float signShadow[SIGN_MAX_LIGHTS];
+            for (int i = 0; i < SIGN_MAX_LIGHTS; ++i) signShadow[i] = signChannel[i] >= 0 ? lampT[signChannel[i]] : 1.0;
+            vec3 signLight = signs ? signScatterAt(p, dir, signShadow) : vec3(0.0);
             float stepT = exp(-smoke.a * dt);
             // (1 - e^(-s dt)) / s, which is dt where the smoke is too thin to dim its own step.
             float through = smoke.a * dt > 1e-4 ? (1.0 - stepT) / smoke.a : dt;

@@ -51,8 +51,9 @@ void signSegments(vec3 origin, vec3 dir, float maxT, inout int n, inout float se
     }
 }
 
-// The signs' light at p scattered along -dir (towards the eye), per unit scattering coefficient.
-vec3 signScatterAt(vec3 p, vec3 dir)
+// The signs' light at p scattered along -dir (towards the eye), per unit scattering coefficient;
+// shadow[i]: what reaches p of sign i's lamp past the smoke (volumes.frag, from the smoke's lamp maps).
+vec3 signScatterAt(vec3 p, vec3 dir, float shadow[SIGN_MAX_LIGHTS])
 {
     vec3 light = vec3(0.0);
     int count = int(signCount);
@@ -61,7 +62,7 @@ vec3 signScatterAt(vec3 p, vec3 dir)
         vec3 toLamp;
         vec3 e = signIrradiance(i, p, toLamp);
         // The light travels along -toLamp; the eye looks along dir.
-        light += e * volumePhase(dot(dir, -toLamp), kSignG);
+        light += shadow[i] * e * volumePhase(dot(dir, -toLamp), kSignG);
     }
     return light;
 }

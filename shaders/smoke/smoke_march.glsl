@@ -15,8 +15,10 @@
 //   sky    the hemispheric ambient x how open the sky is above the cell (B, swept by the solver
 //          down through smoke and roofs), never below kSmokeIndirect (light bounced in)
 //   lamps  the level's point lights near the smoke (smoke_render.cpp picks at most
-//          SMOKE_MAX_LIGHTS), with the surfaces' falloff (1 - d / range)^2, through the phase,
-//          not shadowed by the smoke (that would be a second march per light).
+//          SMOKE_MAX_LIGHTS), with the surfaces' falloff (1 - d / range)^2, through the phase;
+//          the brightest (smokeShadowedLamps of them, up to 4 less the signs') x the smoke's and
+//          its walls' transmittance towards them (smokeLampTransmittance: the solver swept it out
+//          from each lamp, SmokeVolume::computeLampTransmittance), the rest unshadowed.
 // Phases are scaled by pi: light arriving as the surfaces' irradiance E makes a white Lambertian
 // surface send E back; the same light makes smoke send (albedo x pi x phase x E) per unit of
 // opacity: isotropic scattering 0.25 E.
@@ -34,6 +36,13 @@ uniform sampler3D smokeMap0;       // PF_FLOAT32_RGB: density, transmittance to 
 uniform sampler3D smokeMap1;
 uniform sampler3D smokeMap2;
 uniform sampler3D smokeMap3;
+uniform sampler3D smokeLampMap0;   // PF_FLOAT32_RGBA: transmittance towards shadowed lamp c in channel c
+uniform sampler3D smokeLampMap1;
+uniform sampler3D smokeLampMap2;
+uniform sampler3D smokeLampMap3;
+uniform float smokeShadowedCount;  // lamp map channels in use (0..4)
+uniform float smokeShadowedLamps;  // the first this many are smokeLightPosition's first lamps; the signs' follow
+uniform vec3 smokeShadowedPosition[4];  // world position of each channel's lamp
 uniform float smokeSigma;          // extinction per metre per density unit (SmokeSettings::shadowSigma)
 uniform float smokeTime;           // seconds of game time: the noise drifts
 uniform float smokeLightCount;     // 0..SMOKE_MAX_LIGHTS
@@ -64,6 +73,44 @@ vec3 smokeSample(int i, vec3 uvw)
     if (i == 1) return texture(smokeMap1, uvw).rgb;
     if (i == 2) return texture(smokeMap2, uvw).rgb;
     return texture(smokeMap3, uvw).rgb;
+}
+
+vec4 smokeLampSample(int i, vec3 uvw)
+{
+    if (i == 0) return texture(smokeLampMap0, uvw);
+    if (i == 1) return texture(smokeLampMap1, uvw);
+    if (i == 2) return texture(smokeLampMap2, uvw);
+    return texture(smokeLampMap3, uvw);
+}
+
+// The transmittance from p towards each shadowed lamp (channel c: smokeShadowedPosition[c]),
+// the product over the volumes. Inside a volume's grid its lamp map at p; outside it, the map where
+// the segment from p to the lamp enters the grid (what the map holds there is the rest of that
+// segment inside the grid); a segment that misses the grid passes whole.
+vec4 smokeLampTransmittance(vec3 p)
+{
+    vec4 T = vec4(1.0);
+    int count = int(smokeCount), lamps = int(smokeShadowedCount);
+    if (lamps == 0) return T;
+    for (int i = 0; i < SMOKE_MAX_VOLUMES; ++i) {
+        if (i >= count) break;
+        vec3 lo = smokeMin[i], size = smokeSize[i];
+        vec3 uvw = (p - lo) / size;
+        if (all(greaterThanEqual(uvw, vec3(0.0))) && all(lessThanEqual(uvw, vec3(1.0)))) {
+            T *= smokeLampSample(i, uvw);
+            continue;
+        }
+        for (int l = 0; l < 4; ++l) {
+            if (l >= lamps) break;
+            vec3 d = smokeShadowedPosition[l] - p;
+            vec3 inv = 1.0 / (d + vec3(equal(d, vec3(0.0))) * 1e-6);
+            vec3 ta = (lo - p) * inv, tb = (lo + size - p) * inv;
+            float t0 = max(max(min(ta.x, tb.x), min(ta.y, tb.y)), max(min(ta.z, tb.z), 0.0));
+            float t1 = min(min(max(ta.x, tb.x), max(ta.y, tb.y)), min(max(ta.z, tb.z), 1.0));
+            if (t1 > t0) T[l] *= smokeLampSample(i, (p + d * t0 - lo) / size)[l];
+        }
+    }
+    return T;
 }
 
 float smokeHash(vec3 p)
@@ -117,14 +164,15 @@ void smokeSegments(vec3 origin, vec3 dir, float maxT, inout int n, inout float s
 // The smoke at p seen along dir: rgb = the light it scatters towards the eye per unit of its
 // extinction (albedo x sun, sky and lamps through the phase), a = its extinction (per metre).
 // Where volumes overlap, their light is averaged by extinction (one volume: its own, exactly).
-vec4 smokeAt(vec3 p, vec3 dir)
+// lampT: smokeLampTransmittance(p).
+vec4 smokeAt(vec3 p, vec3 dir, vec4 lampT)
 {
     vec3 ambient = mix(groundAmbient, skyAmbient, 0.65);  // a cloud sees mostly sky
     // Light travels along -sunDirection; the eye looks along dir: scattering angle cos = dir . sun.
     float cosSun = dot(dir, sunDirection);
     vec3 sunPhase = vec3(volumePhase(cosSun, kSmokeG), 0.7 * volumePhase(cosSun, 0.5 * kSmokeG),
                          0.5 * volumePhase(cosSun, 0.25 * kSmokeG));
-    int count = int(smokeCount), lights = int(smokeLightCount);
+    int count = int(smokeCount), lights = int(smokeLightCount), shadowed = int(smokeShadowedLamps);
     vec3 scattered = vec3(0.0);
     float sigma = 0.0;
     float sunShadow = -1.0;  // the shadow map at p: read once, at the first volume with smoke here
@@ -153,7 +201,11 @@ vec4 smokeAt(vec3 p, vec3 dir)
             float f = max(1.0 - d / smokeLightPosition[l].w, 0.0);
             if (f <= 0.0) continue;
             float c = dot(dir, toLight) / max(d, 1e-4);
-            lit += smokeLightColour[l].rgb * (f * f * (volumePhase(c, kSmokeG) + 0.5 * volumePhase(c, 0.5 * kSmokeG)));
+            // Single scattering x the transmittance, the wider octave of multiple scattering x its
+            // square root, as the sun's (Wrenninge et al. 2013): light diffuses deeper into the
+            // cloud than it passes straight through.
+            float T = l < shadowed ? lampT[min(l, 3)] : 1.0;
+            lit += smokeLightColour[l].rgb * (f * f * (T * volumePhase(c, kSmokeG) + 0.5 * sqrt(T) * volumePhase(c, 0.5 * kSmokeG)));
         }
         lit *= kSmokeAlbedo;
         if (sigma == 0.0) scattered = lit;

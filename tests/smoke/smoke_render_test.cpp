@@ -1,32 +1,42 @@
-// The smoke's march in the real game, headless: the level's sun shadow map reaches the cloud.
+// The smoke's march in the real game, headless: the level's sun shadow map reaches the cloud, and
+// the cloud shadows its lamp.
 // Level: tests/smoke/levels/sun_tower.map (tools/levelgen/make_smoke_levels.py): a 40 m tower west
 // of the cloud's 16 m box shadows the box's north half (the game's z < 0, the right of this view)
 // from the sun; the solver's own transmittance towards the sun cannot see it (outside its grid).
+// Level: tests/smoke/levels/thin_wall_lamp.map: a closed room lit by lamps only.
 #include <gtest/gtest.h>
 
 #include "core/image.h"
 #include "run_process.h"
 
 #include <filesystem>
+#include <iostream>
 #include <string>
 
 namespace fs = std::filesystem;
 using obscura::testing_support::ProcessResult;
 
 namespace {
-const std::string kLevel = std::string(OBSCURA_SOURCE_DIR) + "/tests/smoke/levels/sun_tower.map";
+const std::string kLevels = std::string(OBSCURA_SOURCE_DIR) + "/tests/smoke/levels/";
+
+// `ticks` into the game on `level` from `pose`, 320 x 180.
+obscura::Image shootAt(const std::string& name, const std::string& level, const std::string& pose, int ticks,
+                       const std::string& extra) {
+    const std::string png = (fs::path(testing::TempDir()) / ("smoke_render_" + name + ".png")).string();
+    const ProcessResult r = obscura::testing_support::runProcess(
+        std::string("'" OBSCURA_GAME "' --headless --ticks ") + std::to_string(ticks) +
+        " --width 320 --height 180 --hud off --ssao off --level '" + kLevels + level + "' --start-pose '" + pose + "' " + extra +
+        " --screenshot " + png);
+    EXPECT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(r.out.find("stage ("), std::string::npos) << "a stage of the frame turned off:\n" << r.out;
+    return obscura::readPng(png);
+}
 
 // 12 m east of a cloud released at the origin, facing west (yaw 90) and a little down on it, 12 s
 // after the release (360 ticks): a dome about 5 m wide, lying across the shadow's edge (z = 0, the
 // middle column).
 obscura::Image shoot(const std::string& name, const std::string& extra) {
-    const std::string png = (fs::path(testing::TempDir()) / ("smoke_render_" + name + ".png")).string();
-    const ProcessResult r = obscura::testing_support::runProcess(
-        std::string("'" OBSCURA_GAME "' --headless --ticks 360 --width 320 --height 180 --hud off --ssao off --level '") +
-        kLevel + "' --start-pose '12 1.7 0 90 10' " + extra + " --screenshot " + png);
-    EXPECT_EQ(r.code, 0) << r.out;
-    EXPECT_EQ(r.out.find("stage ("), std::string::npos) << "a stage of the frame turned off:\n" << r.out;
-    return obscura::readPng(png);
+    return shootAt(name, "sun_tower.map", "12 1.7 0 90 10", 360, extra);
 }
 
 // Mean Rec. 709 luma (gamma-encoded, 0..255) of the window [x0, x1) x [y0, y1), in fractions of the picture.
@@ -39,6 +49,20 @@ double luma(const obscura::Image& im, double x0, double x1, double y0, double y1
             sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
             ++n;
         }
+    return sum / n;
+}
+
+// Mean absolute difference per channel (0..255) of two pictures in a window: colour too, so a grey
+// cloud in front of a red brick wall of the same luma counts.
+double difference(const obscura::Image& a, const obscura::Image& b, const double (&w)[4]) {
+    double sum = 0;
+    int n = 0;
+    for (int y = static_cast<int>(w[2] * a.height); y < static_cast<int>(w[3] * a.height); ++y)
+        for (int x = static_cast<int>(w[0] * a.width); x < static_cast<int>(w[1] * a.width); ++x)
+            for (int c = 0; c < 3; ++c, ++n) {
+                const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 4 + c;
+                sum += std::abs(static_cast<int>(a.rgba[i]) - static_cast<int>(b.rgba[i]));
+            }
     return sum / n;
 }
 
@@ -64,4 +88,24 @@ TEST(SmokeRender, ATowerOutsideTheBoxShadowsItsHalfOfTheCloud) {
     EXPECT_GT(std::abs(lit - litFloor), 15.0) << "no cloud in the sunlit window";
     EXPECT_GT(std::abs(shadowed - shadowedFloor), 15.0) << "no cloud in the shadowed window";
     EXPECT_LT(shadowed, 0.9 * lit) << "the tower's shadow does not darken the cloud: lit " << lit << ", shadowed " << shadowed;
+}
+
+// A cloud released 2.5 m south of the east room's lamp (the lamp at 8 2.5 -1.5, the release at
+// 8 0.31 -4), seen from the room's east end 1.3 s later: the lamp's side (upper left of the view)
+// and the side away from it (lower right), the cloud 2 to 3 m through. Without the smoke's lamp
+// shadow the far window had 0.825 of the near one's luma (measured at 640 x 360 with the shadow's
+// transmittance forced to 1: the falloff and the phase alone); with it 0.71, the far side lit by
+// the room's ambient only. The bound, 0.77, is halfway between.
+TEST(SmokeRender, TheCloudShadowsItsLamp) {
+    const std::string pose = "11.8 1.3 -3.5 90 0";
+    const obscura::Image cloud = shootAt("lamp_cloud", "thin_wall_lamp.map", pose, 40, "--smoke-at '8.0 0.31 -4.0'");
+    const obscura::Image bare = shootAt("lamp_bare", "thin_wall_lamp.map", pose, 40, "");
+    constexpr double kNear[4] = {0.45, 0.55, 0.35, 0.50}, kFar[4] = {0.62, 0.76, 0.60, 0.80};
+    const double nearLit = luma(cloud, kNear[0], kNear[1], kNear[2], kNear[3]);
+    const double farLit = luma(cloud, kFar[0], kFar[1], kFar[2], kFar[3]);
+    EXPECT_GT(difference(cloud, bare, kNear), 8.0) << "no cloud in the near window";
+    EXPECT_GT(difference(cloud, bare, kFar), 8.0) << "no cloud in the far window";
+    std::cout << "near " << nearLit << ", far " << farLit << " (" << farLit / nearLit << "); against the bare room "
+              << difference(cloud, bare, kNear) << " and " << difference(cloud, bare, kFar) << "\n";
+    EXPECT_LT(farLit, 0.77 * nearLit) << "the lamp lights the cloud's far side through it: near " << nearLit << ", far " << farLit;
 }
