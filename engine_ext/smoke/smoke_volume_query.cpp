@@ -307,9 +307,9 @@ void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>&
     constexpr float kOpaque = 12.f;  // as computeTransmittance: a built cell passes e^-12
     const double clearance = kLampClearance / g.cellSize;  // cells
     // Pyramid p: the cells whose dominant offset from the lamp is along axis a = p / 2, on the
-    // side sgn (the first axis wins a tie). Its planes are swept outwards, each whole (a cell at
-    // the pyramid's edge reads the plane before up to a cell outside it), and each writes only its
-    // own cells: every cell once, whatever the thread count.
+    // side sgn (the first axis wins a tie). Its planes are swept outwards, each over the pyramid's
+    // square and a margin (a cell at the pyramid's edge reads the plane before up to a cell
+    // outside it), and each writes only its own cells: every cell once, whatever the thread count.
     auto sweep = [&](int p) {
         const int a = p / 2, b = (a + 1) % 3, c = (a + 2) % 3, sgn = (p % 2) ? 1 : -1;
         const int nb = n[b], nc = n[c];
@@ -322,9 +322,19 @@ void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>&
             const int pa = sa - sgn;                 // the plane before, towards the lamp
             const bool fromLamp = D <= 1.0;          // the plane before is at or past the lamp
             const double shrink = (D - 1.0) / D;     // where the ray to the lamp crosses plane pa
-            for (int yc = 0; yc < nc; ++yc) {
+            // Only the pyramid's square on this plane, 2 cells wider: its cells read the plane
+            // before within D - 1 + 1 of the lamp's axis (the bilinear's second texel), which that
+            // plane's own square, D + 1 wide, holds.
+            const auto span = [&](int axis, int count, int& lo, int& hi) {
+                lo = std::max(0, static_cast<int>(std::floor(lc[axis] - D - 2)));
+                hi = std::min(count - 1, static_cast<int>(std::ceil(lc[axis] + D + 2)));
+            };
+            int b0s, b1s, c0s, c1s;
+            span(b, nb, b0s, b1s);
+            span(c, nc, c0s, c1s);
+            for (int yc = c0s; yc <= c1s; ++yc) {
                 const double dc = yc - lc[c];
-                for (int xb = 0; xb < nb; ++xb) {
+                for (int xb = b0s; xb <= b1s; ++xb) {
                     const double db = xb - lc[b];
                     const std::size_t cell = sa * stride[a] + xb * stride[b] + yc * stride[c];
                     const double dist = std::sqrt(D * D + db * db + dc * dc);  // cells to the lamp
