@@ -3,7 +3,7 @@
 // buffer, and the measures the issue's table needs. README.md has the whole story.
 //
 //   render   obscura_signref --level L --pose "x y z yaw pitch" [--fov 90] [--width 640 --height 360]
-//              [--haze 0.02] [--smoke smoke.dump] [--spp 4] [--step 0.02] [--lamp-samples 16]
+//              [--haze 0.02] [--smoke smoke.dump] [--spp 4] [--step 0.02] [--shadow-step 0.05] [--lamp-samples 16]
 //              [--far 50] [--threads N] [--seed 1] [--spread M] [--hole "sign x y r"]... [--law]
 //              [--out ref.pfm] [--png preview.png [--preview-scale S]] [--compare game.pfm]...
 //            prints per --compare: "signref rmse=... rmse_off=... mean_ref=... max_ref=... pixels=...
@@ -167,6 +167,7 @@ int main(int argc, char** argv) {
         ("smoke", po::value(&smokeFile), "a smoke dump (engine_ext/smoke/smoke_dump.h) for the medium")
         ("spp", po::value(&opt.spp), "view rays a pixel, stratified over its area (4)")
         ("step", po::value(&opt.step), "metres between points along a ray (0.02)")
+        ("shadow-step", po::value(&opt.shadowStep), "metres between points from a lit point to the lamp through the medium (0.05; 0: the lamp's light not dimmed by it)")
         ("lamp-samples", po::value(&lampSamples), "directions to the lamp's sphere at each point (16; edge: 4096)")
         ("far", po::value(&opt.far), "metres a ray that hits nothing is marched (50)")
         ("threads", po::value(&threads), "worker threads (all cores); the image does not depend on it")
@@ -201,6 +202,7 @@ int main(int argc, char** argv) {
         opt.law = vm.count("law") > 0;
         if (!(opt.step > 0) || !std::isfinite(opt.step)) throw po::error("--step must be a positive number of metres");
         if (opt.spp < 1) throw po::error("--spp must be at least 1");
+        if (!(opt.shadowStep >= 0) || !std::isfinite(opt.shadowStep)) throw po::error("--shadow-step must be 0 or a positive number of metres");
         if (vm.count("lamp-samples") && lampSamples < 1) throw po::error("--lamp-samples must be at least 1");
         if (!(haze >= 0) || !std::isfinite(haze)) throw po::error("--haze must not be negative");
         if (!(opt.far > 0)) throw po::error("--far must be positive");

@@ -139,9 +139,15 @@ Vec3 ShaftReference::alongRay(const Vec3& eye, const Vec3& dir, double tmax, con
             // Each point's lamp samples have their own stream, drawn whether or not they are
             // taken: culling changes no other point's samples (the tests compare cull on and off).
             const std::uint64_t hi = rng.nextU32(), lo = rng.nextU32();
+            // The medium between p and the lamp, from the same stream's jitter (drawn always).
+            const double shadowU = static_cast<double>(lo & 0xffffu) / 65536.0;
+            const auto dimmed = [&](const Vec3& light) {
+                if (!(opt.shadowStep > 0) || (light.x == 0 && light.y == 0 && light.z == 0)) return light;
+                return light * std::exp(-medium_.opticalDepth(p, sign.spec.lamp, opt.shadowStep, shadowU));
+            };
             if (opt.law) {
-                source += lawIrradiance(sign, opt.geometry ? &scene_ : nullptr, p) *
-                          phaseHG(dot(dir, normalize(p - sign.spec.lamp)), kShaftG);
+                source += dimmed(lawIrradiance(sign, opt.geometry ? &scene_ : nullptr, p) *
+                                 phaseHG(dot(dir, normalize(p - sign.spec.lamp)), kShaftG));
                 continue;
             }
             const Vec3 e0 = unshadowedIrradiance(sign.spec, p);
@@ -149,7 +155,7 @@ Vec3 ShaftReference::alongRay(const Vec3& eye, const Vec3& dir, double tmax, con
             Rng lampRng((hi << 32) | lo);
             const double share = lampShareCulled(sign, p, opt, lampRng);
             if (share == 0) continue;
-            source += e0 * (share * phaseHG(dot(dir, normalize(p - sign.spec.lamp)), kShaftG));
+            source += dimmed(e0 * (share * phaseHG(dot(dir, normalize(p - sign.spec.lamp)), kShaftG)));
         }
         // (1 - e^(-sigma_t dt)) / sigma_t, which is dt in a medium that only scatters (the game's
         // thin haze: --haze-extinction 0).

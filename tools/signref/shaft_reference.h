@@ -17,6 +17,8 @@
 //             sigma_t += smokeSigma x density(p) x detail(p, time), albedo kSmokeAlbedo
 //             (smoke_medium.h: smoke_march.glsl's noise, in double)
 //   T(t)      exp(-integral sigma_t)
+//   E(p) is dimmed by the medium on its way from the lamp: x exp(-integral sigma_t, p -> lamp)
+//             (shadowStep; the law's light too)
 //
 // Along the ray: steps of `step` metres with one jittered point each (stratified), the medium
 // and the light constant over a step, integrated exactly over it: T (sigma_s / sigma_t)
@@ -59,6 +61,10 @@ struct ShaftOptions {
     // formula, and one occlusion ray to the lamp's centre) for E. Not the truth: it shows how much
     // of a game figure is the law's and how much the estimator's (README).
     bool law = false;
+    // The lamp's light dimmed by the medium between the point and the lamp (the smoke, and a
+    // physical haze): exp(-Medium::opticalDepth), points this many metres apart; 0: not dimmed
+    // (the truth before the game's smoke shadowed its lamps). The cloud's cells are 0.25 m.
+    double shadowStep = 0.05;
     std::uint64_t seed = 1;
 };
 

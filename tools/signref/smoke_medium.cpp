@@ -1,6 +1,7 @@
 // See smoke_medium.h. Line for line shaders/smoke/smoke_march.glsl, in double.
 #include "signref/smoke_medium.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace obscura::signref {
@@ -50,6 +51,43 @@ void Medium::at(const Vec3& p, double& sigmaT, Vec3& sigmaS) const {
         sigmaT += s;
         sigmaS += Vec3{kSmokeAlbedo[0], kSmokeAlbedo[1], kSmokeAlbedo[2]} * s;
     }
+}
+
+double Medium::opticalDepth(const Vec3& a, const Vec3& b, double step, double u, double enough) const {
+    const Vec3 d = b - a;
+    const double length = std::sqrt(dot(d, d));
+    double tau = (hazeExtinction < 0 ? haze : hazeExtinction) * length;
+    if (!smoke || !(length > 0)) return tau;
+    // The part of a -> b (t in 0..1) inside any grid's box: outside them there is no smoke.
+    double lo = 1, hi = 0;
+    for (const smoke::DumpVolume& v : smoke->volumes) {
+        const double size[3] = {v.nx * v.cellSize, v.ny * v.cellSize, v.nz * v.cellSize};
+        const double o[3] = {v.origin.x, v.origin.y, v.origin.z}, s[3] = {a.x, a.y, a.z}, e[3] = {d.x, d.y, d.z};
+        double t0 = 0, t1 = 1;
+        for (int k = 0; k < 3 && t0 <= t1; ++k) {
+            if (e[k] == 0) {
+                if (s[k] < o[k] || s[k] > o[k] + size[k]) t1 = -1;
+                continue;
+            }
+            const double ta = (o[k] - s[k]) / e[k], tb = (o[k] + size[k] - s[k]) / e[k];
+            t0 = std::max(t0, std::min(ta, tb));
+            t1 = std::min(t1, std::max(ta, tb));
+        }
+        if (t0 <= t1) lo = std::min(lo, t0), hi = std::max(hi, t1);
+    }
+    if (lo >= hi) return tau;
+    const double base = hazeExtinction < 0 ? haze : hazeExtinction;
+    const double span = (hi - lo) * length;
+    const long steps = std::max(1L, static_cast<long>(std::ceil(span / step)));
+    const double dt = span / static_cast<double>(steps);
+    for (long k = 0; k < steps && tau < enough; ++k) {
+        const Vec3 p = a + d * (lo + (static_cast<double>(k) + u) * dt / length);
+        double sigmaT;
+        Vec3 sigmaS;
+        at(p, sigmaT, sigmaS);
+        tau += (sigmaT - base) * dt;  // the smoke's share: the haze's is counted above
+    }
+    return tau;
 }
 
 }  // namespace obscura::signref

@@ -27,6 +27,10 @@ struct Medium {
 
     // Extinction (per metre) and the rgb scattering coefficient at p.
     void at(const Vec3& p, double& sigmaT, Vec3& sigmaS) const;
+    // The optical depth from a to b: the haze's extinction exactly, the smoke's by points `step`
+    // metres apart (at u in 0..1 of each step, jittered by the caller) over the part of the segment
+    // inside the dumped grids' boxes; it stops once past `enough` (the light is gone).
+    double opticalDepth(const Vec3& a, const Vec3& b, double step, double u, double enough = 30) const;
 };
 
 }  // namespace obscura::signref
