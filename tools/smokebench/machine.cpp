@@ -17,17 +17,22 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
-// 12 independent chains of x = x * m + a: enough in flight to cover the latency of the two
-// multiply and two add pipes; 2 flops per lane per chain step. A macro, not a template: a
-// template instantiated for the AVX2 vectors would be compiled for the baseline target.
-constexpr int kChains = 12;
-#define SMOKEBENCH_CHAINS(NAME, V)                                               \
+// Independent chains of x = x * m + a, 2 flops per lane per chain step. A step is a multiply
+// then an add (~6 cycles of latency), so feeding the two multiply and two add pipes needs 12
+// chains in flight: 12 where there are 16 vector registers (SSE2, AVX2: 16 chains would spill
+// and measure the spills), 24 where there are 32 (AVX-512). A macro, not a template: a template
+// instantiated for the wider vectors would be compiled for the baseline target.
+#define SMOKEBENCH_CHAINS(NAME, V, CHAINS)                                       \
     double NAME(long steps, float seed) {                                        \
+        constexpr int kChains = CHAINS;                                          \
         V x[kChains];                                                            \
         const V m = V{} + 0.999999f, a = V{} + 1e-7f;                            \
         for (int c = 0; c < kChains; ++c) x[c] = V{} + (seed + 0.01f * c);       \
-        for (long s = 0; s < steps; ++s)                                         \
+        steps = steps * 12 / kChains; /* the same work for every chain count */  \
+        for (long s = 0; s < steps; ++s) {                                       \
+            _Pragma("GCC unroll 32") /* chains in registers, not an array */    \
             for (int c = 0; c < kChains; ++c) x[c] = x[c] * m + a;               \
+        }                                                                        \
         float sink = 0;                                                          \
         for (int c = 0; c < kChains; ++c) sink += x[c][0];                       \
         volatile float keep = sink;                                              \
@@ -36,20 +41,34 @@ constexpr int kChains = 12;
     }
 
 typedef float V4 __attribute__((vector_size(16)));
-SMOKEBENCH_CHAINS(chainsSse, V4)
+SMOKEBENCH_CHAINS(chainsSse, V4, 12)
 #if defined(__x86_64__) && defined(__GNUC__)
 #pragma GCC push_options
 #pragma GCC target("avx2")
 typedef float V8 __attribute__((vector_size(32)));
-SMOKEBENCH_CHAINS(chainsAvx2, V8)
+SMOKEBENCH_CHAINS(chainsAvx2, V8, 12)
+#pragma GCC pop_options
+#pragma GCC push_options
+#pragma GCC target("avx512f")
+typedef float V16 __attribute__((vector_size(64)));
+SMOKEBENCH_CHAINS(chainsAvx512, V16, 24)
 #pragma GCC pop_options
 #else
 double chainsAvx2(long steps, float seed) { return chainsSse(steps, seed); }
+double chainsAvx512(long steps, float seed) { return chainsSse(steps, seed); }
 #endif
 
 std::vector<pid_t> competitors;
 
 }  // namespace
+
+int widestLanes() {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (__builtin_cpu_supports("avx512f")) return 16;
+    if (__builtin_cpu_supports("avx2")) return 8;
+#endif
+    return 4;
+}
 
 double triadGBs(obscura::smoke::ThreadPool& pool, std::size_t n, int reps) {
     std::vector<double> a(n), b(n), c(n);
@@ -77,16 +96,18 @@ double triadGBs(obscura::smoke::ThreadPool& pool, std::size_t n, int reps) {
     return 3.0 * 8.0 * static_cast<double>(n) / best / 1e9;
 }
 
-double peakGflops(obscura::smoke::ThreadPool& pool, bool avx2) {
+double peakGflops(obscura::smoke::ThreadPool& pool, int lanes) {
     const int threads = pool.threads();
-    const long steps = 20'000'000 / kChains;
+    const long steps = 20'000'000 / 12;
     double best = 0;
     for (int r = 0; r < 3; ++r) {
         std::vector<double> flops(static_cast<std::size_t>(threads), 0.0);
         const auto t0 = Clock::now();
         pool.parallelFor(threads, [&](int b, int e) {
             for (int t = b; t < e; ++t)
-                flops[static_cast<std::size_t>(t)] = avx2 ? chainsAvx2(steps, 1.0f + t) : chainsSse(steps, 1.0f + t);
+                flops[static_cast<std::size_t>(t)] = lanes >= 16  ? chainsAvx512(steps, 1.0f + t)
+                                                     : lanes >= 8 ? chainsAvx2(steps, 1.0f + t)
+                                                                  : chainsSse(steps, 1.0f + t);
         });
         const double dt = seconds(t0, Clock::now());
         double total = 0;

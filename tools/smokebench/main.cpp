@@ -6,7 +6,9 @@
 // CPU-heavy processes competing for the cores.
 //
 // Usage: obscura_smokebench [--threads N] [--quick] [--baseline] [--compete N] [--only64]
-//   --baseline: the SSE2 build of the optimised solver even where the CPU has AVX2
+//   --baseline: the SSE2 build of the optimised solver even where the CPU has AVX2. The roofline's
+//     peak is the machine's either way: on its widest vectors (AVX-512 where it has it), the bound
+//     a step cannot beat on this machine whichever build runs
 //   --compete N: N spinning child processes run during the timings (an oversubscribed machine)
 //   --only64: the 64^3 play row alone (for before/after runs)
 // Prints a table and one machine-readable line starting with "smokebench ".
@@ -170,7 +172,9 @@ int main(int argc, char** argv) {
     SmokeSettings base;
     base.threads = threads;
     base.vectorIsa = baseline ? VectorIsa::Baseline : VectorIsa::Best;
-    const bool avx2 = !baseline && avx2PathAvailable();
+    const int solverLanes = !baseline && avx2PathAvailable() ? 8 : 4;  // the build the solver runs
+    const int machineLanes = smokebench::widestLanes();                 // the machine's widest vectors
+    const char* isaName = solverLanes == 8 ? "AVX2" : "baseline (SSE2)";
     auto pool = std::make_shared<ThreadPool>(threads);
     const int nThreads = pool->threads();
 
@@ -180,13 +184,15 @@ int main(int argc, char** argv) {
     const std::size_t dramN = quick || only64 ? (std::size_t{8} << 20) : (std::size_t{32} << 20);
     m.dramGBs = smokebench::triadGBs(*pool, dramN, quick || only64 ? 3 : 6);
     m.l3GBs = smokebench::triadGBs(*pool, std::size_t{512} << 10, 60);
-    m.peakGflops = smokebench::peakGflops(*pool, avx2);
+    m.peakGflops = smokebench::peakGflops(*pool, machineLanes);
+    const double solverPeak = solverLanes == machineLanes ? m.peakGflops : smokebench::peakGflops(*pool, solverLanes);
     std::printf("obscura_smokebench: %d threads (hardware: %u), %s build of the solver%s\n", nThreads,
-                std::thread::hardware_concurrency(), avx2 ? "AVX2" : "baseline (SSE2)",
+                std::thread::hardware_concurrency(), isaName,
                 compete ? (", " + std::to_string(compete) + " competing CPU-bound processes").c_str() : "");
     std::printf("machine, measured now on %d threads: DRAM %.1f GB/s (STREAM triad, 3 x %zu doubles), L3 %.1f GB/s "
-                "(triad, 12 MB), peak %.1f GFLOP/s (%s multiply + add, no FMA)\n",
-                nThreads, m.dramGBs, dramN, m.l3GBs, m.peakGflops, avx2 ? "8-float" : "4-float");
+                "(triad, 12 MB), peak %.1f GFLOP/s (%d-float multiply + add, no FMA: the machine's widest; %d-float, "
+                "the solver build's: %.1f)\n",
+                nThreads, m.dramGBs, dramN, m.l3GBs, m.peakGflops, machineLanes, solverLanes, solverPeak);
     std::printf("a step's least traffic: %.0f B/cell a substep (6 fields read and written, class + masks + source read)\n\n",
                 kMinBytesPerCell);
     std::printf("%-6s %-10s %5s %5s %9s %9s %9s %8s %8s %8s %7s %7s %7s %7s %6s\n", "grid", "solver", "subs", "its",
@@ -194,9 +200,11 @@ int main(int argc, char** argv) {
                 "x_l3");
     if (compete) smokebench::startCompetitors(compete);
 
-    std::string machine = "smokebench threads=" + std::to_string(nThreads) + " isa=" + (avx2 ? "avx2" : "baseline") +
+    std::string machine = "smokebench threads=" + std::to_string(nThreads) + " isa=" +
+                          (solverLanes == 8 ? "avx2" : "baseline") +
                           " compete=" + std::to_string(compete) + " dram_gbs=" + std::to_string(m.dramGBs) +
-                          " l3_gbs=" + std::to_string(m.l3GBs) + " peak_gflops=" + std::to_string(m.peakGflops);
+                          " l3_gbs=" + std::to_string(m.l3GBs) + " peak_gflops=" + std::to_string(m.peakGflops) +
+                          " solver_peak_gflops=" + std::to_string(solverPeak);
     auto row = [&](const char* label, int n, PressureSolver solver, bool reference, int warmup, int perBlock, int blocks,
                    std::shared_ptr<ThreadPool> rowPool) {
         SmokeSettings st = base;
