@@ -137,12 +137,21 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
         return static_cast<std::size_t>(sa * stride[a] + xb * stride[b] + yc * stride[c]);
     };
     const int first = dirA > 0 ? n[a] - 1 : 0;
+    // The inner loop runs along whichever of the slice's axes is contiguous in memory (x, or y
+    // when x is the sweep's axis): with the sun high (a = y) the other order stepped a whole
+    // plane (16 KB at 64^3) from one cell to the next: 2.7-4.0 ms a 64^3 sweep of the sun at
+    // (0.3, 1, 0.2) against 1.0-1.1 ms in this order (alternating runs of the two builds, 10
+    // sweeps each, fastest). Each cell of a slice reads only the slice before, so the order
+    // changes no value (a hash of the sun's and the lamps' maps over six directions: the same).
+    const bool bInner = stride[b] < stride[c];
+    const int outerN = bInner ? n[c] : n[b], innerN = bInner ? n[b] : n[c];
     for (int step = 1; step < n[a]; ++step) {
         const int sa = first - dirA * step, prev = sa + dirA;
-        impl_->pool->parallelFor(n[c], [&](int y0, int y1) {
-            for (int yc = y0; yc < y1; ++yc) {
-                const int c0 = std::clamp(yc + ic, 0, n[c] - 1), c1 = std::clamp(yc + ic + 1, 0, n[c] - 1);
-                for (int xb = 0; xb < n[b]; ++xb) {
+        impl_->pool->parallelFor(outerN, [&](int o0, int o1) {
+            for (int o = o0; o < o1; ++o) {
+                for (int in = 0; in < innerN; ++in) {
+                    const int xb = bInner ? in : o, yc = bInner ? o : in;
+                    const int c0 = std::clamp(yc + ic, 0, n[c] - 1), c1 = std::clamp(yc + ic + 1, 0, n[c] - 1);
                     const int b0 = std::clamp(xb + ib, 0, n[b] - 1), b1 = std::clamp(xb + ib + 1, 0, n[b] - 1);
                     const std::size_t p00 = at(prev, b0, c0), p10 = at(prev, b1, c0), p01 = at(prev, b0, c1),
                                       p11 = at(prev, b1, c1);
@@ -332,10 +341,13 @@ void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>&
             int b0s, b1s, c0s, c1s;
             span(b, nb, b0s, b1s);
             span(c, nc, c0s, c1s);
-            for (int yc = c0s; yc <= c1s; ++yc) {
-                const double dc = yc - lc[c];
-                for (int xb = b0s; xb <= b1s; ++xb) {
-                    const double db = xb - lc[b];
+            // The inner loop along the contiguous axis, as computeTransmittance's.
+            const bool bInner = stride[b] < stride[c];
+            const int o0 = bInner ? c0s : b0s, o1 = bInner ? c1s : b1s, i0 = bInner ? b0s : c0s, i1 = bInner ? b1s : c1s;
+            for (int o = o0; o <= o1; ++o) {
+                for (int in = i0; in <= i1; ++in) {
+                    const int xb = bInner ? in : o, yc = bInner ? o : in;
+                    const double db = xb - lc[b], dc = yc - lc[c];
                     const std::size_t cell = sa * stride[a] + xb * stride[b] + yc * stride[c];
                     const double dist = std::sqrt(D * D + db * db + dc * dc);  // cells to the lamp
                     const float rho = den[cell];
