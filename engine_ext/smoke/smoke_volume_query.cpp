@@ -304,9 +304,18 @@ const std::vector<float>& SmokeVolume::skyVisibility() const { return impl_->sky
 void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>& out) const {
     const SmokeState& s = impl_->state;
     const GridInfo& g = s.grid;
-    out.assign(g.cells(), 1.f);
     const Vec3 l = g.toCellCoords(lamp);
-    if (!std::isfinite(l.x + l.y + l.z)) return;
+    if (!std::isfinite(l.x + l.y + l.z)) {
+        out.assign(g.cells(), 1.f);
+        return;
+    }
+    // The sweeps write each cell's optical depth into `out` (0, a transmittance of 1, where no
+    // pyramid reaches: the lamp's own cell); one pass turns them into transmittances at the end.
+    // expNeg outside the sweep: in it, its dependent chain of multiplies and adds was 40 % of the
+    // sweep's samples (perf); a 2-lamp 64^3 upload took 10.5-13.9 ms, now 6.8-10.1 (alternating
+    // runs of the two builds of a small driver, fastest of 10 each; the same bits: a hash of the
+    // sun's and 4 lamps' maps unchanged).
+    out.assign(g.cells(), 0.f);
     const double lc[3] = {l.x, l.y, l.z};
     const int n[3] = {g.nx, g.ny, g.nz};
     const std::size_t stride[3] = {1, static_cast<std::size_t>(g.nx), static_cast<std::size_t>(g.nx) * g.ny};
@@ -386,7 +395,7 @@ void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>&
                     bool mine = true;
                     for (int x = 0; x < 3 && mine; ++x)
                         if (x != a) mine = x < a ? std::fabs(off[x]) < D : std::fabs(off[x]) <= D;
-                    if (mine) out[cell] = expNeg(tau);
+                    if (mine) out[cell] = tau;
                 }
             }
             prev.swap(cur);
@@ -395,6 +404,11 @@ void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>&
     };
     impl_->pool->parallelFor(6, [&](int p0, int p1) {
         for (int p = p0; p < p1; ++p) sweep(p);
+    });
+    const std::size_t cells = g.cells();
+    impl_->pool->parallelFor(64, [&](int c0, int c1) {
+        const std::size_t e = cells * static_cast<std::size_t>(c1) / 64;
+        for (std::size_t i = cells * static_cast<std::size_t>(c0) / 64; i < e; ++i) out[i] = expNeg(out[i]);
     });
 }
 
