@@ -99,6 +99,15 @@ float expNeg(float x) {
     return p * scale;
 }
 
+// T[i] = e^-tau[i] for every cell, on the pool (T may be tau: each cell reads only itself).
+void transmittanceOf(ThreadPool& pool, const std::vector<float>& tau, std::vector<float>& T) {
+    const std::size_t cells = tau.size();
+    pool.parallelFor(64, [&](int c0, int c1) {
+        const std::size_t e = cells * static_cast<std::size_t>(c1) / 64;
+        for (std::size_t i = cells * static_cast<std::size_t>(c0) / 64; i < e; ++i) T[i] = expNeg(tau[i]);
+    });
+}
+
 }  // namespace
 
 void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
@@ -165,11 +174,7 @@ void SmokeVolume::computeTransmittance(const Vec3& towardLight) {
             }
         });
     }
-    const std::size_t cells = s.grid.cells();
-    impl_->pool->parallelFor(64, [&](int c0, int c1) {
-        const std::size_t e = cells * static_cast<std::size_t>(c1) / 64;
-        for (std::size_t i = cells * static_cast<std::size_t>(c0) / 64; i < e; ++i) T[i] = expNeg(tau[i]);
-    });
+    transmittanceOf(*impl_->pool, tau, T);
 }
 
 namespace {
@@ -292,11 +297,7 @@ void SmokeVolume::computeSkyVisibility() {
             }
         });
     }
-    const std::size_t cells = g.cells();
-    impl_->pool->parallelFor(64, [&](int c0, int c1) {
-        const std::size_t e = cells * static_cast<std::size_t>(c1) / 64;
-        for (std::size_t i = cells * static_cast<std::size_t>(c0) / 64; i < e; ++i) V[i] = expNeg(tau[i]);
-    });
+    transmittanceOf(*impl_->pool, tau, V);
 }
 
 const std::vector<float>& SmokeVolume::skyVisibility() const { return impl_->skyVisibility; }
@@ -405,11 +406,7 @@ void SmokeVolume::computeLampTransmittance(const Vec3& lamp, std::vector<float>&
     impl_->pool->parallelFor(6, [&](int p0, int p1) {
         for (int p = p0; p < p1; ++p) sweep(p);
     });
-    const std::size_t cells = g.cells();
-    impl_->pool->parallelFor(64, [&](int c0, int c1) {
-        const std::size_t e = cells * static_cast<std::size_t>(c1) / 64;
-        for (std::size_t i = cells * static_cast<std::size_t>(c0) / 64; i < e; ++i) out[i] = expNeg(out[i]);
-    });
+    transmittanceOf(*impl_->pool, out, out);
 }
 
 void SmokeVolume::exportLampTransmittance(const std::vector<Vec3>& lamps, std::vector<float>& out) const {
