@@ -93,6 +93,9 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
       signs_(level_, {OBSCURA_SIGN_FONT_DIR, std::filesystem::path(settings.level).parent_path().string()}),
       previousPlayer_(sim_.player()) {
     for (std::size_t i = 0; i < sim_.movers().count(); ++i) previousMoverOffsets_.push_back(sim_.movers().offset(i));
+    std::vector<smoke::SmokeLamp> signLamps;  // shadowed by the smoke in the signs' shafts
+    for (const signs::SignSpec& s : signs_.specs()) signLamps.push_back({s.lamp, s.lightColour * s.intensity, s.range});
+    smoke_.setSignLamps(std::move(signLamps));
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
 }
 

@@ -47,6 +47,17 @@ std::string formatFrameStats(const FrameStats& s, const std::string& name) {
     return buf;
 }
 
+std::string formatSmokeThread(const std::vector<double>& ms) {
+    if (ms.empty()) return {};
+    const FrameStats s = computeFrameStats(ms);
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "  smoke on the render thread ms a frame: median %.3f  p99 %.3f  max %.3f\n"
+                  "timedemo-smoke-thread median_ms=%.4f p99_ms=%.4f max_ms=%.4f\n",
+                  s.medianMs, s.p99Ms, s.maxMs, s.medianMs, s.p99Ms, s.maxMs);
+    return buf;
+}
+
 std::string formatSegments(const std::vector<TimedemoSegment>& segments, std::size_t warmup) {
     if (segments.size() < 2) return {};
     auto steady = [warmup](const std::vector<double>& v) {

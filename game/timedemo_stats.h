@@ -27,6 +27,9 @@ struct TimedemoSegment {
 // its shaders there), each with its mean wall and CPU time and their differences from the first
 // segment's, then one machine-readable "timedemo-segment " line each. Empty for one segment.
 std::string formatSegments(const std::vector<TimedemoSegment>& segments, std::size_t warmup);
+// The smoke's work on the render thread a frame (ms; smoke/smoke_pipeline.h): its median, p99 and
+// max over the frames, a line each way (human, then "timedemo-smoke-thread "); empty if none.
+std::string formatSmokeThread(const std::vector<double>& ms);
 // Human-readable lines, then one machine-readable line starting with "timedemo ".
 std::string formatFrameStats(const FrameStats& s, const std::string& name);
 

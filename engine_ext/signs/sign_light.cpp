@@ -306,4 +306,24 @@ Vec3 signIrradiance(const SignSpec& sign, const SignMask& mask, const std::vecto
     return sign.lightColour * (sign.intensity * throughSign(sign, mask, holes, p) * window / (r * r));
 }
 
+void beamBounds(const SignSpec& sign, const SignMask& mask, Vec3& lo, Vec3& hi) {
+    // The penumbra reaches at most the lamp's radius past an edge in the plate's plane, stretched
+    // by 1 / cos psi off the axis (penumbraAcrossEdge); within the cone (<= 90 degrees, where
+    // 1 / cos grows without bound) 4x covers psi up to 75 degrees, the widest default cone, and
+    // the plate's own edge (the light's whole share is on its inner side) past that.
+    const double margin = 4 * sign.lightRadius + 1e-3;
+    const double a = std::max(dot(sign.centre - sign.lamp, sign.facing), 1e-6);
+    // Points lit lie within `range` of the lamp, so along the axis no further than range: the
+    // pyramid's corners scaled out to that plane bound it.
+    const double scale = std::max(sign.range, a) / a;
+    lo = hi = sign.lamp;
+    for (int c = 0; c < 4; ++c) {
+        const Vec3 corner = sign.centre + sign.right * ((c & 1 ? 1 : -1) * (mask.halfWidth + margin)) +
+                            sign.up * ((c & 2 ? 1 : -1) * (mask.halfHeight + margin));
+        const Vec3 far = sign.lamp + (corner - sign.lamp) * scale;
+        lo = {std::min(lo.x, far.x), std::min(lo.y, far.y), std::min(lo.z, far.z)};
+        hi = {std::max(hi.x, far.x), std::max(hi.y, far.y), std::max(hi.z, far.z)};
+    }
+}
+
 }  // namespace obscura::signs

@@ -133,6 +133,11 @@ double penumbraAcrossEdge(double r, const Vec3& towardLamp, const SignSpec& sign
 //                                  normalize(lamp - p), gx, gy)) x cone
 double throughSign(const SignSpec& sign, const SignMask& mask, const std::vector<Hole>& holes, const Vec3& p);
 
+// A box holding every point the sign's light reaches (signIrradiance > 0): the pyramid from the
+// lamp through the plate, widened by the lamp's penumbra, cut where its axis passes the range
+// (no point of it beyond the range is lit). The renderer skips a sign whose box is out of view.
+void beamBounds(const SignSpec& sign, const SignMask& mask, Vec3& lo, Vec3& hi);
+
 // The light the lamp sends to p through the sign, before occlusion by geometry: irradiance on a
 // surface facing the lamp (linear rgb) = lightColour x intensity x throughSign x window(d) /
 // max(d, lightRadius)^2, d = |p - lamp|, window(d) = clamp(1 - (d / range)^4, 0, 1)^2 (inverse

@@ -94,6 +94,9 @@ SignRender::SignRender(Ogre::SceneManager& scene, std::vector<SignSpec> specs, s
         const SignMask& m = masks_[i];
         maskTextures_.push_back(floatTexture("Obscura/Signs/Mask" + std::to_string(i), m.width, m.height, m.distance.data()));
         buildPlate(i);
+        beamLo_.emplace_back();
+        beamHi_.emplace_back();
+        beamBounds(specs_[i], m, beamLo_.back(), beamHi_.back());
     }
     meshuggah_ = std::make_unique<Meshuggah>(scene_, specs_, masks_);
     if (specs_.empty()) return;
@@ -244,7 +247,7 @@ void SignRender::updatePlate(std::size_t i) {
     fp->setNamedConstant("plateHoles", holes, SIGN_MAX_HOLES, 4);
 }
 
-void SignRender::update(const std::vector<SignHoles>& holes, std::uint64_t version, const Ogre::Vector3& camera) {
+void SignRender::update(const std::vector<SignHoles>& holes, std::uint64_t version, const Ogre::Camera& view) {
     if (version != holesVersion_) {
         holesVersion_ = version;
         for (std::size_t i = 0; i < specs_.size() && i < holes.size(); ++i) {
@@ -253,10 +256,14 @@ void SignRender::update(const std::vector<SignHoles>& holes, std::uint64_t versi
             meshuggah_->setHoles(i, holes_[i]);
         }
     }
-    // The nearest signs whose beam could reach the camera's surroundings: by distance to the lamp,
-    // minus its range (a sign whose light cannot reach within 8 m of the camera is not worth a slot).
+    // The nearest signs whose beam is in view (its box, beamBounds: a sign whose light shows
+    // nowhere in the frame costs no shadow map, no surface pass and no march) and could reach the
+    // camera's surroundings: by distance to the lamp, minus its range (a sign whose light cannot
+    // reach within 8 m of the camera is not worth a slot).
+    const Ogre::Vector3 camera = view.getDerivedPosition();
     std::vector<std::pair<float, std::size_t>> order;
     for (std::size_t i = 0; i < specs_.size(); ++i) {
+        if (!view.isVisible(Ogre::AxisAlignedBox(ogre(beamLo_[i]), ogre(beamHi_[i])))) continue;
         const float d = camera.distance(ogre(specs_[i].lamp)) - static_cast<float>(specs_[i].range);
         if (d < 8.f) order.push_back({std::max(d, 0.f) + 1e-3f * static_cast<float>(i), i});
     }

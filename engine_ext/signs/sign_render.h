@@ -48,9 +48,10 @@ public:
     SignRender(const SignRender&) = delete;
     SignRender& operator=(const SignRender&) = delete;
 
-    // Once a frame, before the frame updates: the holes (when `version` moved) and which signs the
-    // camera is nearest.
-    void update(const std::vector<SignHoles>& holes, std::uint64_t version, const Ogre::Vector3& camera);
+    // Once a frame, before the frame updates: the holes (when `version` moved) and which signs
+    // are lit: those whose beam is in `view`'s frustum, the nearest.
+    void update(const std::vector<SignHoles>& holes, std::uint64_t version, const Ogre::Camera& view);
+    std::size_t litCount() const { return chosen_.size(); }
     void setMode(SignMode mode) { mode_ = mode; }
     SignMode mode() const { return mode_; }
     void setHaze(float haze) { haze_ = haze; }
@@ -90,6 +91,7 @@ private:
     std::vector<Ogre::SceneNode*> nodes_;
     std::vector<Ogre::ManualObject*> plates_;
     std::vector<std::size_t> chosen_;  // the signs lit this frame, nearest first
+    std::vector<Vec3> beamLo_, beamHi_;  // each sign's beamBounds (sign_light.h)
     Ogre::TexturePtr noMask_, noShadow_;
     std::vector<Shadow> shadows_;  // SIGN_MAX_LIGHTS slots, for chosen_
     Ogre::MaterialPtr caster_;

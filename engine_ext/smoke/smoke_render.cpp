@@ -17,21 +17,7 @@
 namespace obscura::smoke {
 
 namespace {
-// Density below which a cell does not count towards the marched box (what the RG8 texture
-// rounded to 0, so the box is as big as it was): 1 m of it passes 98.4 %
-// at the solver's shadowSigma (4 /m), nothing to see.
-constexpr float kVisibleDensity = 0.004f;
-// The lamp maps' channels (RGBA) and how many of them the signs may take: SIGN_MAX_LIGHTS (2)
-// signs are lit at a time (engine_ext/signs), so at least two channels stay for the level's lamps.
-constexpr std::size_t kShadowedLamps = 4, kShadowedSignLamps = 2;
-
-// The distance from p to the nearest point of a binding's occupied box.
-float distanceToBox(const Ogre::Vector3& p, const Ogre::Vector3& lo, const Ogre::Vector3& size) {
-    Ogre::Vector3 nearest = p;
-    nearest.makeCeil(lo);
-    nearest.makeFloor(lo + size);
-    return p.distance(nearest);
-}
+Ogre::Vector3 toOgre(const Vec3& v) { return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)}; }
 }  // namespace
 
 SmokeRender::SmokeRender() {
@@ -57,9 +43,17 @@ SmokeRender::~SmokeRender() {
     if (uploads_ > 0 && Ogre::LogManager::getSingletonPtr()) {
         std::ostringstream os;
         const double n = static_cast<double>(uploads_);
-        os << "smoke: " << uploads_ << " volume uploads, mean " << exportSeconds_ * 1e3 / n << " ms export (exportRGBFloat) + "
-           << uploadSeconds_ * 1e3 / n << " ms PF_FLOAT32_RGB blit + " << lampSeconds_ * 1e3 / n
-           << " ms lamp maps (exportLampTransmittance + PF_FLOAT32_RGBA blit)";
+        os << "smoke: " << uploads_ << " volume uploads, mean " << exportMs_ / n << " ms export (exportRGBFloat) + "
+           << lampMs_ / n << " ms lamp maps (exportLampTransmittance) on the worker, "
+           << uploadSeconds_ * 1e3 / n << " ms blits (PF_FLOAT32_RGB, PF_FLOAT32_RGBA) on the render thread";
+        // What the worker took a step (releases, solver, sun and sky, export, lamp maps): the render
+        // thread's burst before the pipeline.
+        std::vector<double> w = workerMs_;
+        std::sort(w.begin(), w.end());
+        const auto rank = [&w](double q) { return w[std::min(w.size() - 1, static_cast<std::size_t>(q * static_cast<double>(w.size())))]; };
+        if (!w.empty())
+            os << "; the worker's step: median " << rank(0.5) << " ms, p99 " << rank(0.99) << " ms, max " << w.back()
+               << " ms over " << w.size() << " steps";
         Ogre::LogManager::getSingleton().logMessage(os.str());
     }
     for (auto& [id, tex] : textures_) Ogre::TextureManager::getSingleton().remove(tex);
@@ -69,144 +63,59 @@ SmokeRender::~SmokeRender() {
     Ogre::TextureManager::getSingleton().remove(noSunShadow_);
 }
 
-void SmokeRender::setLights(Ogre::SceneManager& scene) {
-    lights_.clear();
-    for (const auto& [name, object] : scene.getMovableObjects(Ogre::LightFactory::FACTORY_TYPE_NAME)) {
-        const auto* light = static_cast<const Ogre::Light*>(object);
-        if (light->getType() != Ogre::Light::LT_POINT || !light->isVisible()) continue;
-        const Ogre::ColourValue c = light->getDiffuseColour() * light->getPowerScale();
-        lights_.push_back({light->getDerivedPosition(), Ogre::Vector3(c.r, c.g, c.b), light->getAttenuationRange()});
+// The texture of volume `id` in `cache` (taken out of it), or a new one; kept in `live`.
+Ogre::TexturePtr SmokeRender::textureFor(std::map<int, Ogre::TexturePtr>& cache, std::map<int, Ogre::TexturePtr>& live,
+                                         int id, const GridInfo& g, Ogre::PixelFormat format, const std::string& prefix) {
+    Ogre::TexturePtr tex;
+    if (auto it = cache.find(id); it != cache.end()) {
+        tex = it->second;
+        cache.erase(it);
+    } else {
+        tex = Ogre::TextureManager::getSingleton().createManual(
+            prefix + std::to_string(id), Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_3D, static_cast<Ogre::uint>(g.nx),
+            static_cast<Ogre::uint>(g.ny), static_cast<Ogre::uint>(g.nz), 0, format, Ogre::TU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
     }
-    // The collection is keyed by name (OGRE's generated names): sort by position so the choice of
-    // lights on a tie does not depend on the names.
-    std::sort(lights_.begin(), lights_.end(), [](const PointLight& a, const PointLight& b) {
-        return std::tie(a.position.x, a.position.y, a.position.z) < std::tie(b.position.x, b.position.y, b.position.z);
-    });
+    live[id] = tex;
+    return tex;
 }
 
-// The lights whose range reaches any marched box, the brightest at its nearest point of a box
-// first, at most SMOKE_MAX_LIGHTS.
-void SmokeRender::chooseLights() {
-    std::vector<std::pair<float, std::size_t>> scored;
-    for (std::size_t l = 0; l < lights_.size(); ++l) {
-        const PointLight& p = lights_[l];
-        float best = 0.f;
-        for (const Binding& b : bindings_) {
-            const float d = distanceToBox(p.position, b.occupiedMin, b.occupiedSize);
-            if (d >= p.range) continue;
-            const float f = 1.f - d / p.range;
-            best = std::max(best, (0.2126f * p.colour.x + 0.7152f * p.colour.y + 0.0722f * p.colour.z) * f * f);
-        }
-        if (best > 0.f) scored.push_back({-best, l});
-    }
-    std::sort(scored.begin(), scored.end());
-    bound_.clear();
-    for (std::size_t i = 0; i < scored.size() && i < SMOKE_MAX_LIGHTS; ++i) bound_.push_back(lights_[scored[i].second]);
-}
-
-// The lamp maps' channels: the signs' lamps whose range reaches a marched box (the nearest first,
-// at most kShadowedSignLamps), and before them the brightest bound level lamps, as many as leave
-// room: the level's brightest lamps are shadowed, the rest of bound_ light the smoke unshadowed.
-void SmokeRender::chooseShadowedLamps() {
-    std::vector<std::pair<float, std::size_t>> signs;
-    for (std::size_t s = 0; s < signLamps_.size(); ++s) {
-        float nearest = signLamps_[s].range;
-        for (const Binding& b : bindings_) nearest = std::min(nearest, distanceToBox(signLamps_[s].position, b.occupiedMin, b.occupiedSize));
-        if (nearest < signLamps_[s].range) signs.push_back({nearest, s});
-    }
-    std::sort(signs.begin(), signs.end());
-    signs.resize(std::min(signs.size(), kShadowedSignLamps));
-    shadowedLevelLamps_ = std::min(bound_.size(), kShadowedLamps - signs.size());
-    shadowed_.clear();
-    for (std::size_t l = 0; l < shadowedLevelLamps_; ++l) shadowed_.push_back(bound_[l].position);
-    for (const auto& [d, s] : signs) shadowed_.push_back(signLamps_[s].position);
-    shadowedPositions_.clear();
-    for (const Ogre::Vector3& p : shadowed_) shadowedPositions_.push_back({p.x, p.y, p.z});
-}
-
-// Each marched volume's lamp map (its texture kept by volume id, like the fields').
-void SmokeRender::uploadLampMaps(const std::vector<std::pair<int, const SmokeVolume*>>& marched) {
-    auto& tm = Ogre::TextureManager::getSingleton();
-    std::map<int, Ogre::TexturePtr> live;
-    for (std::size_t i = 0; i < marched.size() && !shadowed_.empty(); ++i) {
-        const auto& [id, volume] = marched[i];
-        const GridInfo& g = volume->grid();
-        Ogre::TexturePtr tex;
-        if (auto it = lampTextures_.find(id); it != lampTextures_.end()) {
-            tex = it->second;
-            lampTextures_.erase(it);
-        } else {
-            tex = tm.createManual("Obscura/Smoke/Lamps/" + std::to_string(id), Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_3D,
-                                  static_cast<Ogre::uint>(g.nx), static_cast<Ogre::uint>(g.ny), static_cast<Ogre::uint>(g.nz),
-                                  0, Ogre::PF_FLOAT32_RGBA, Ogre::TU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
-        }
-        const auto start = std::chrono::steady_clock::now();
-        volume->exportLampTransmittance(shadowedPositions_, buffer_);
-        tex->getBuffer()->blitFromMemory(Ogre::PixelBox(static_cast<Ogre::uint32>(g.nx), static_cast<Ogre::uint32>(g.ny),
-                                                        static_cast<Ogre::uint32>(g.nz), Ogre::PF_FLOAT32_RGBA, buffer_.data()));
-        lampSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        live[id] = tex;
-        bindings_[i].lampTexture = tex;
-    }
-    for (auto& [id, tex] : lampTextures_) tm.remove(tex);  // volumes that finished or are not marched
-    lampTextures_ = std::move(live);
-}
-
-void SmokeRender::update(const SmokeManager& manager, bool stepped, float time) {
+void SmokeRender::update(const SmokeFrame& frame, float time, float sigma) {
+    const auto start = std::chrono::steady_clock::now();
     time_ = time;
-    sigma_ = static_cast<float>(manager.settings().shadowSigma);
-    if (!stepped) return;
+    sigma_ = sigma;
+    lastUpdateMs_ = 0;
+    if (frame.version == uploadedVersion_) return;
+    uploadedVersion_ = frame.version;
     auto& tm = Ogre::TextureManager::getSingleton();
-    std::map<int, Ogre::TexturePtr> live;
-    std::vector<std::pair<int, const SmokeVolume*>> marched;  // bindings_'s volumes
+    std::map<int, Ogre::TexturePtr> live, liveLamps;
     bindings_.clear();
-    for (const auto& entry : manager.volumes()) {
-        if (bindings_.size() == SMOKE_MAX_VOLUMES) break;  // the march's samplers; the oldest are marched
-        const GridInfo& g = entry.volume.grid();
-        Ogre::TexturePtr tex;
-        if (auto it = textures_.find(entry.id); it != textures_.end()) {
-            tex = it->second;
-            textures_.erase(it);
-        } else {
-            tex = tm.createManual("Obscura/Smoke/" + std::to_string(entry.id), Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_3D,
-                                  static_cast<Ogre::uint>(g.nx), static_cast<Ogre::uint>(g.ny), static_cast<Ogre::uint>(g.nz),
-                                  0, Ogre::PF_FLOAT32_RGB, Ogre::TU_DYNAMIC_WRITE_ONLY_DISCARDABLE);
+    for (const SmokeFrameVolume& v : frame.volumes) {
+        const GridInfo& g = v.grid;
+        const auto box = [&g](Ogre::PixelFormat format, const float* data) {
+            return Ogre::PixelBox(static_cast<Ogre::uint32>(g.nx), static_cast<Ogre::uint32>(g.ny),
+                                  static_cast<Ogre::uint32>(g.nz), format, const_cast<float*>(data));
+        };
+        Ogre::TexturePtr tex = textureFor(textures_, live, v.id, g, Ogre::PF_FLOAT32_RGB, "Obscura/Smoke/");
+        tex->getBuffer()->blitFromMemory(box(Ogre::PF_FLOAT32_RGB, v.fields.data()));
+        Ogre::TexturePtr lamps = noLampShadow_;
+        if (!v.lamps.empty()) {
+            lamps = textureFor(lampTextures_, liveLamps, v.id, g, Ogre::PF_FLOAT32_RGBA, "Obscura/Smoke/Lamps/");
+            lamps->getBuffer()->blitFromMemory(box(Ogre::PF_FLOAT32_RGBA, v.lamps.data()));
         }
-        const auto start = std::chrono::steady_clock::now();
-        entry.volume.exportRGBFloat(buffer_);
-        const auto exported = std::chrono::steady_clock::now();
-        tex->getBuffer()->blitFromMemory(Ogre::PixelBox(static_cast<Ogre::uint32>(g.nx), static_cast<Ogre::uint32>(g.ny),
-                                                        static_cast<Ogre::uint32>(g.nz), Ogre::PF_FLOAT32_RGB, buffer_.data()));
-        exportSeconds_ += std::chrono::duration<double>(exported - start).count();
-        uploadSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - exported).count();
         ++uploads_;
-        live[entry.id] = tex;
-        // The cells holding any smoke, one cell wider (trilinear reach): empty space is not marched.
-        int lo[3] = {g.nx, g.ny, g.nz}, hi[3] = {-1, -1, -1};
-        for (int k = 0; k < g.nz; ++k)
-            for (int j = 0; j < g.ny; ++j)
-                for (int i = 0; i < g.nx; ++i)
-                    if (buffer_[3 * g.index(i, j, k)] > kVisibleDensity) {
-                        const int c[3] = {i, j, k};
-                        for (int a = 0; a < 3; ++a) {
-                            lo[a] = std::min(lo[a], c[a]);
-                            hi[a] = std::max(hi[a], c[a]);
-                        }
-                    }
-        if (hi[0] < 0) continue;  // nothing visible yet (or any more)
-        const auto f = [](double v) { return static_cast<float>(v); };
-        const Ogre::Vector3 origin(f(g.origin.x), f(g.origin.y), f(g.origin.z)), size(f(g.size().x), f(g.size().y), f(g.size().z));
-        const float h = f(g.cellSize);
-        const Ogre::Vector3 boxMin = origin + Ogre::Vector3(f(lo[0] - 1), f(lo[1] - 1), f(lo[2] - 1)) * h;
-        const Ogre::Vector3 boxMax = origin + Ogre::Vector3(f(hi[0] + 2), f(hi[1] + 2), f(hi[2] + 2)) * h;
-        bindings_.push_back({tex, noLampShadow_, origin, size, boxMin, boxMax - boxMin});
-        marched.push_back({entry.id, &entry.volume});
+        bindings_.push_back({tex, lamps, toOgre(g.origin), toOgre(g.size()), toOgre(v.occupied.min), toOgre(v.occupied.size)});
     }
-    for (auto& [id, tex] : textures_) tm.remove(tex);  // volumes that finished
+    for (auto& [id, tex] : textures_) tm.remove(tex);  // volumes that finished or are not marched
+    for (auto& [id, tex] : lampTextures_) tm.remove(tex);
     textures_ = std::move(live);
-    chooseLights();
-    chooseShadowedLamps();
-    uploadLampMaps(marched);
+    lampTextures_ = std::move(liveLamps);
+    lamps_ = frame.lamps;
+    exportMs_ += frame.exportMs;
+    lampMs_ += frame.lampMs;
+    workerMs_.push_back(frame.commandMs + frame.stepMs + frame.lightMs + frame.exportMs + frame.lampMs);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    uploadSeconds_ += seconds;
+    lastUpdateMs_ = seconds * 1e3;
 }
 
 std::string SmokeRender::compositor() const { return bindings_.empty() ? std::string() : frame::kVolumesCompositor; }
@@ -266,21 +175,25 @@ void SmokeRender::bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u
     u.setArray("smokeBoxMin", boxMins, SMOKE_MAX_VOLUMES, 3);
     u.setArray("smokeBoxSize", boxSizes, SMOKE_MAX_VOLUMES, 3);
     float lightPos[SMOKE_MAX_LIGHTS * 4] = {}, lightColour[SMOKE_MAX_LIGHTS * 4] = {};
-    for (std::size_t i = 0; i < bound_.size(); ++i) {
-        for (int c = 0; c < 3; ++c) {
-            lightPos[i * 4 + c] = bound_[i].position[c];
-            lightColour[i * 4 + c] = bound_[i].colour[c];
+    const std::vector<SmokeLamp>& bound = lamps_.bound;
+    for (std::size_t i = 0; i < bound.size() && i < SMOKE_MAX_LIGHTS; ++i) {
+        const Ogre::Vector3 p = toOgre(bound[i].position), c = toOgre(bound[i].colour);
+        for (int k = 0; k < 3; ++k) {
+            lightPos[i * 4 + k] = p[k];
+            lightColour[i * 4 + k] = c[k];
         }
-        lightPos[i * 4 + 3] = std::max(bound_[i].range, 1e-3f);
+        lightPos[i * 4 + 3] = std::max(static_cast<float>(bound[i].range), 1e-3f);
     }
-    u.set("smokeLightCount", static_cast<float>(bound_.size()));
+    u.set("smokeLightCount", static_cast<float>(bound.size()));
     u.setArray("smokeLightPosition", lightPos, SMOKE_MAX_LIGHTS, 4);
     u.setArray("smokeLightColour", lightColour, SMOKE_MAX_LIGHTS, 4);
     float shadowedPos[kShadowedLamps * 3] = {};
-    for (std::size_t i = 0; i < shadowed_.size(); ++i)
-        for (int c = 0; c < 3; ++c) shadowedPos[i * 3 + c] = shadowed_[i][c];
-    u.set("smokeShadowedCount", static_cast<float>(shadowed_.size()));
-    u.set("smokeShadowedLamps", static_cast<float>(shadowedLevelLamps_));
+    for (std::size_t i = 0; i < lamps_.shadowed.size() && i < kShadowedLamps; ++i) {
+        const Ogre::Vector3 p = toOgre(lamps_.shadowed[i]);
+        for (int k = 0; k < 3; ++k) shadowedPos[i * 3 + k] = p[k];
+    }
+    u.set("smokeShadowedCount", static_cast<float>(lamps_.shadowed.size()));
+    u.set("smokeShadowedLamps", static_cast<float>(lamps_.shadowedLevelLamps));
     u.setArray("smokeShadowedPosition", shadowedPos, kShadowedLamps, 3);
 }
 

@@ -178,7 +178,7 @@ void GameApp::load() {
     std::cerr << summary << "\n";
     // Sounds load once, here (a malformed WAV stops the game at load time, naming the file); with
     // no audio device the game runs silent after one warning line.
-    audio_ = std::make_unique<GameAudio>(settings_, dataPath("media/sounds"), session_->smoke().manager().settings().emitTime);
+    audio_ = std::make_unique<GameAudio>(settings_, dataPath("media/sounds"), session_->smoke().settings().emitTime);
 
     PauseMenu::Hooks hooks;
     hooks.set = [this](const std::string& key, const std::string& value) { applySetting(key, value, "menu"); };
@@ -268,6 +268,7 @@ bool GameApp::paused() const { return menu_->isOpen(); }
 bool GameApp::quitRequested() const { return quit_ || mRoot->endRenderingQueued(); }
 std::uint64_t GameApp::simTick() const { return session_->tick(); }
 std::string GameApp::stateHashHex() const { return session_->sim().stateHashHex(); }
+double GameApp::smokeRenderThreadMs() const { return session_->smoke().lastTickMs() + view_->smokeUploadMs(); }
 void GameApp::writeScreenshot(const std::string& path) {
     if (settings_.headless && view_->truthShown()) {
         // A headless capture of the truth is the finished reference's, scored: wait for the

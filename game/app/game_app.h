@@ -70,6 +70,7 @@ private:
     void writeScreenshot(const std::string& path) override;
     void finishFrame() override;
     std::string stateHashHex() const override;
+    double smokeRenderThreadMs() const override;
 
     void load();
     void applyAoSettings();

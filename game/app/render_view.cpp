@@ -129,11 +129,6 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     for (const auto& m : materials_->liquidMaterials()) frame_->addSceneMaterial(m);  // they read gbufferDepth
     ao_ = std::make_unique<ssao::AmbientOcclusion>(settings.seed);
     smoke_ = std::make_unique<smoke::SmokeRender>();
-    smoke_->setLights(*scene_);  // the level's point lights (LevelGeometry made them above) light the smoke too
-    std::vector<smoke::SmokeRender::PointLight> signLamps;  // shadowed by the smoke in the signs' shafts
-    for (const signs::SignSpec& s : session.signs().specs())
-        signLamps.push_back({render::toOgre(s.lamp), render::toOgre(s.lightColour * s.intensity), static_cast<float>(s.range)});
-    smoke_->setSignLamps(std::move(signLamps));
     // Room for every decal the session can hold: the ring's cap and the fixed ones (signs).
     decals_ = std::make_unique<decals::DecalRender>(*scene_, session.decals().set().capacity(), session.decals().signTiles());
     frame_->add(*decals_);
@@ -266,6 +261,8 @@ void RenderView::resized(int width, int height, double horizontalFov) {
     setFov(horizontalFov);  // the vertical FOV follows the aspect
 }
 
+double RenderView::smokeUploadMs() const { return smoke_->lastUpdateMs(); }
+
 void RenderView::onTick(const std::vector<sim::SimEvent>& events) {
     combat_->onTick(events);
 }
@@ -351,10 +348,9 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     // The smoke: new fields to the GPU when it stepped; then the frame's chain for this frame's
     // techniques (AO mode, smoke or none), outside the render.
     const GameSmoke& smoke = session.smoke();
-    smoke_->update(smoke.manager(), smoke.version() != smokeUploaded_, static_cast<float>(smoke.seconds()));
-    smokeUploaded_ = smoke.version();
+    smoke_->update(smoke.frame(), static_cast<float>(smoke.seconds()), static_cast<float>(smoke.settings().shadowSigma));
     decals_->update(session.decals().list(), session.decals().version());
-    signs_->update(session.signs().holes(), session.signs().version(), render::toOgre(eye_));
+    signs_->update(session.signs().holes(), session.signs().version(), *camera_);
     frame_->update(static_cast<float>(smoke.seconds()));
     // The liquids' warp runs on simulation time (replays draw the same frames); the camera's
     // liquid, if any, tints and fogs the view.

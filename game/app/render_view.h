@@ -95,6 +95,7 @@ public:
 
     // After each simulation tick: effects for its events.
     void onTick(const std::vector<sim::SimEvent>& events);
+    double smokeUploadMs() const;  // the smoke's uploads in the last update()
     // Once a frame: the camera between the previous and the latest tick (alpha 0..1), props, targets.
     void update(const Session& session, double alpha);
     Listener listener() const;
@@ -143,7 +144,6 @@ private:
     std::unique_ptr<render::Hud> hud_;
     std::unique_ptr<TruthKey> truth_;  // plugs a pass into frame_
     double yaw_ = 0, pitch_ = 0, fov_ = 90, aoRadius_ = 0;  // the camera as drawn (radians, degrees), the AO radius
-    std::uint64_t smokeUploaded_ = 0;  // GameSmoke::version() of the fields on the GPU
     Ogre::AxisAlignedBox heightBounds_;  // the AO height map's box (null: no brushes)
     std::string aoMode_;
     std::vector<Vec3> bakedMoverOffsets_, latestMoverOffsets_;  // sim().movers() order

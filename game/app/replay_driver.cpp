@@ -85,6 +85,7 @@ void ReplayDriver::afterFrame(FrameHost&) {
     frameMs_.push_back(lastMs_);
     segments_.back().frameMs.push_back(lastMs_);
     segments_.back().cpuMs.push_back(processCpuMs() - cpuStart_);
+    smokeMs_.push_back(host_.smokeRenderThreadMs());
     ++tick_;
 }
 
@@ -102,7 +103,8 @@ std::string ReplayDriver::report() const {
     auto segments = segments_;
     for (auto& seg : segments)
         if (seg.label.empty()) seg.label = "start";
-    return formatFrameStats(computeFrameStats(frameMs_), script_.fileName) + formatSegments(segments, kTimedemoWarmupFrames);
+    return formatFrameStats(computeFrameStats(frameMs_), script_.fileName) + formatSmokeThread(smokeMs_) +
+           formatSegments(segments, kTimedemoWarmupFrames);
 }
 
 }  // namespace obscura

@@ -35,6 +35,9 @@ public:
     virtual void writeScreenshot(const std::string& path) = 0;
     virtual void finishFrame() = 0;  // waits for the frame's rendering
     virtual std::string stateHashHex() const = 0;
+    // Milliseconds of the smoke's work on the render thread in the frame just drawn: its ticks'
+    // queueing and waits for the worker, and the uploads (smoke/smoke_pipeline.h).
+    virtual double smokeRenderThreadMs() const = 0;
 };
 
 class ReplayDriver : public RunDriver {
@@ -68,6 +71,7 @@ private:
     double cpuStart_ = 0;
     std::vector<double> frameMs_;
     std::vector<TimedemoSegment> segments_{1};
+    std::vector<double> smokeMs_;  // smokeRenderThreadMs() a frame
 };
 
 }  // namespace obscura

@@ -6,6 +6,8 @@
 // from tests/signs/levels/bad_signs.map (one good sign per feature, one bad sign per reason).
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "entity_lines.h"
 
 #include "decals/glyph.h"
@@ -628,5 +630,36 @@ TEST(SignLight, TheArenasDarkRoomHasItsSignAndNoLamp) {
                     EXPECT_GT(length(p - l.position), l.radius) << "a lamp at " << l.position.x << " " << l.position.y << " "
                                                                  << l.position.z << " reaches " << x << " " << y << " " << z;
                 }
+    }
+}
+
+// Every point the sign lights lies in its beam's box (the renderer culls by it), for a lamp behind
+// the centre and one off to the side; points behind the lamp and past the range are outside it.
+TEST(SignLight, TheBeamsBoxHoldsEveryLitPoint) {
+    SignSpec s = testSign("IIIIIIIIII", 0.4);
+    s.range = 6;
+    const SignMask m = bakeMask(s, 0.06);
+    const std::vector<Hole> open = {{0, 0, 10}};  // the whole plate open: the most light there is
+    for (const Vec3& lamp : {Vec3{0, 0, -0.4}, Vec3{0.3, -0.2, -0.3}}) {
+        s.lamp = lamp;
+        Vec3 lo, hi;
+        beamBounds(s, m, lo, hi);
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> u(-8, 8);
+        int lit = 0, outside = 0;
+        for (int i = 0; i < 200000; ++i) {
+            const Vec3 p{u(rng), u(rng), u(rng)};
+            const bool in = p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y && p.z <= hi.z;
+            outside += !in;
+            if (length(signIrradiance(s, m, open, p)) <= 0) continue;
+            ++lit;
+            EXPECT_TRUE(in) << p.x << " " << p.y << " " << p.z;
+        }
+        EXPECT_GT(lit, 100);        // the test saw the beam
+        EXPECT_GT(outside, 120000);  // and the box is not the whole space (16 m a side; the beam
+                                     // widens 15x from the plate to the range)
+        EXPECT_LT(lo.z, lamp.z + 1e-9);
+        EXPECT_LT(hi.z, lamp.z + s.range + 1e-9);
+        EXPECT_GT(lo.z, lamp.z - 0.01);  // nothing behind the lamp
     }
 }
