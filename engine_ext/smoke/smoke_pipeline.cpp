@@ -102,9 +102,7 @@ void SmokePipeline::carve(const Vec3& origin, const Vec3& direction, double leng
 }
 
 void SmokePipeline::step(double dt, std::vector<MovingObstacle> obstacles, const Vec3& towardSun) {
-    const auto start = Clock::now();
     wait();
-    lastWaitMs_ = msSince(start);
     std::swap(front_, back_);  // the step before, now complete, is what the renderer draws
     bool spawns = false;
     for (const Command& c : pending_) spawns = spawns || c.kind == Command::Kind::Spawn;

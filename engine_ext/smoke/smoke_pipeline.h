@@ -81,8 +81,6 @@ public:
     // Waits for the step in flight: the manager as it is after every step issued (but not the
     // work queued since). For tests and dumps; the frame never calls it.
     const SmokeManager& settled();
-    // Milliseconds the last step() waited for the worker.
-    double lastWaitMs() const { return lastWaitMs_; }
 
 private:
     struct Command {
@@ -108,7 +106,6 @@ private:
     std::vector<Command> pending_;  // queued since the last step()
     SmokeFrame front_, back_;
     bool maybeLive_ = false;  // the step in flight or the queued work may hold smoke
-    double lastWaitMs_ = 0;
     std::uint64_t issued_ = 0;  // steps started
 
     std::mutex mutex_;

@@ -1,6 +1,7 @@
 // See smoke_render.h.
 #include "smoke/smoke_render.h"
 
+#include "render/ogre_convert.h"
 #include "smoke/smoke_shared.h"
 
 #include <Ogre.h>
@@ -12,13 +13,10 @@
 #include <chrono>
 #include <sstream>
 #include <string>
-#include <tuple>
 
 namespace obscura::smoke {
 
-namespace {
-Ogre::Vector3 toOgre(const Vec3& v) { return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)}; }
-}  // namespace
+using render::toOgre;
 
 SmokeRender::SmokeRender() {
     float emptyCell[3] = {0.f, 1.f, 1.f};

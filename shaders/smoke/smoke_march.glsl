@@ -14,7 +14,7 @@
 //          "Rendering and play", says why the product counts a wall in the box once)
 //   sky    the hemispheric ambient x how open the sky is above the cell (B, swept by the solver
 //          down through smoke and roofs), never below kSmokeIndirect (light bounced in)
-//   lamps  the level's point lights near the smoke (smoke_render.cpp picks at most
+//   lamps  the level's point lights near the smoke (engine_ext/smoke/smoke_lamps.cpp picks at most
 //          SMOKE_MAX_LIGHTS), with the surfaces' falloff (1 - d / range)^2, through the phase;
 //          the brightest (smokeShadowedLamps of them, up to 4 less the signs') x the smoke's and
 //          its walls' transmittance towards them (smokeLampTransmittance: the solver swept it out
