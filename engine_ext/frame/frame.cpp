@@ -16,6 +16,10 @@ namespace obscura::frame {
 namespace {
 // Pass identifiers of the frame's own quad passes (media/frame/frame.compositor).
 constexpr Ogre::uint32 kLightingPass = 1, kOutputPass = 2;
+// The volumetrics compositor's own passes after the march (kVolumesPass): media/frame/frame.compositor.
+constexpr Ogre::uint32 kVolumeResolvePass = 31, kVolumeCopyPass = 32;
+// The half-resolution pixel of each 2x2 block marched in frame n: kVolumePhase[n % FRAME_VOLUME_PHASES].
+constexpr float kVolumePhase[FRAME_VOLUME_PHASES][2] = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
 const char* const kGBufferScheme = "GBuffer";
 // The split G-buffer's two schemes (Obscura/Frame/GBufferSplit) and the part each compiles.
 const char* const kPartSchemes[2] = {"GBufferA", "GBufferB"};
@@ -329,6 +333,7 @@ void Frame::rebuild() {
         }
         if (!checked) continue;
         builtKey_ = k;
+        volumeFrames_ = 0;  // a new chain's volume buffers hold nothing yet
         return;
     }
 }
@@ -359,13 +364,36 @@ void Frame::renderPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat) {
     bind(e, passId, *pass, set);
 }
 
+int Frame::volumeSettleFrames() const {
+    const bool marched = std::any_of(chain_.begin(), chain_.end(), [](const auto& e) { return e->compositor == kVolumesCompositor; });
+    if (!marched) return 0;
+    const int phases = FRAME_VOLUME_PHASES, next = static_cast<int>(volumeFrames_ % FRAME_VOLUME_PHASES);
+    return (phases - next) % phases + phases;
+}
+
 void Frame::setAmbientAreas(std::vector<AmbientBox> areas) {
     if (areas.size() > FRAME_MAX_AMBIENT_AREAS) areas.resize(FRAME_MAX_AMBIENT_AREAS);
     ambientAreas_ = std::move(areas);
 }
 
 void Frame::bind(Entry& e, Ogre::uint32 passId, Ogre::Pass& pass, Uniforms& u) {
-    if (passId == kVolumesPass) setViewRay(u, context_);  // for whichever techniques march in it
+    const float* phase = kVolumePhase[volumeFrames_ % FRAME_VOLUME_PHASES];
+    if (passId == kVolumesPass) {  // for whichever techniques march in it
+        setViewRay(u, context_);
+        u.set("volumeMarchPhase", Ogre::Vector2(phase[0], phase[1]));
+    } else if (passId == kVolumeResolvePass) {
+        setViewRay(u, context_);
+        u.set("volumeMarchPhase", Ogre::Vector2(phase[0], phase[1]));
+        u.set("volumeHistoryValid", volumeFrames_ > 0 ? 1.0f : 0.0f);
+        u.set("previousView", volumeLastView_);
+        if (!u.checking()) {  // this frame's march and resolve are bound: the next frame's turn
+            volumeLastView_ = camera_.getViewMatrix();
+            ++volumeFrames_;
+        }
+        return;
+    } else if (passId == kVolumeCopyPass) {
+        return;
+    }
     for (Technique* t : e.techniques) t->bind(passId, pass, u, context_);
     if (!e.techniques.empty()) return;
     if (passId == kLightingPass) {

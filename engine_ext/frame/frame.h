@@ -89,6 +89,11 @@ public:
                                           Ogre::Material* originalMaterial, unsigned short lodIndex,
                                           const Ogre::Renderable* rend) override;
 
+    // Frames to draw of an unchanged scene before a capture shows the volumetrics converged and
+    // the same whatever frames came before (the phase cycle run from its start: every pixel marched
+    // once on this state, then clamped in one order); 0 while nothing is marched.
+    int volumeSettleFrames() const;
+
 private:
     struct Entry;
     class Binder;
@@ -122,6 +127,10 @@ private:
     bool split_ = false;  // the G-buffer in two passes (fewer than FRAME_GBUFFER_TARGETS targets)
     Ogre::Technique* addPart(Ogre::Material& material, const Ogre::Technique& gbuffer, int part);
     FrameContext context_;
+    // The volumetrics' interleaved march (shaders/frame/volume_resolve.frag): frames resolved
+    // since the chain was built (the phase, whether a history exists) and the view they were seen from.
+    std::uint64_t volumeFrames_ = 0;
+    Ogre::Matrix4 volumeLastView_ = Ogre::Matrix4::IDENTITY;
 };
 
 }  // namespace obscura::frame

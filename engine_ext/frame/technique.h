@@ -23,7 +23,9 @@ const char* stageName(Stage s);
 // The volumetric pass (media/frame/frame.compositor, Obscura/Frame/Volumes): every technique of
 // the volumetrics stage returns this compositor and binds into this one pass, so all participating
 // media are marched together with one transmittance (shaders/frame/volumes.frag). The frame sets
-// the camera's uniforms there (projScale, flipY, inverseView).
+// the camera's uniforms there (projScale, flipY, inverseView) and the frame's volumeMarchPhase (which
+// quarter of the pixels is marched: shaders/frame/frame_shared.h); its resolve and history passes
+// are the frame's own.
 constexpr const char* kVolumesCompositor = "Obscura/Frame/Volumes";
 constexpr Ogre::uint32 kVolumesPass = 30;
 
@@ -55,6 +57,8 @@ public:
     void setArray(const char* name, const float* values, std::size_t count, std::size_t multiple) {
         if (check(name)) params_.setNamedConstant(name, values, count, multiple);
     }
+    // The load-time check, not a frame: a bind() must not advance any state then.
+    bool checking() const { return missing_ != nullptr; }
 
 private:
     bool check(const char* name);

@@ -1,6 +1,7 @@
 // See smoke_pipeline.h.
 #include "smoke/smoke_pipeline.h"
 
+#include "smoke/smoke_lamp_light.h"
 #include "smoke/smoke_shared.h"
 
 #include <algorithm>
@@ -64,8 +65,10 @@ void exportFrame(const SmokeManager& manager, const std::vector<SmokeLamp>& leve
     for (const auto& entry : manager.volumes()) {
         if (v == out.volumes.size()) break;
         if (entry.id != out.volumes[v].id) continue;
-        if (out.lamps.shadowed.empty()) out.volumes[v].lamps.clear();
-        else entry.volume.exportLampTransmittance(out.lamps.shadowed, out.volumes[v].lamps);
+        SmokeFrameVolume& fv = out.volumes[v];
+        if (out.lamps.shadowed.empty()) fv.lamps.clear();
+        else entry.volume.exportLampTransmittance(out.lamps.shadowed, fv.lamps);
+        lampLight(fv.grid, fv.occupied, out.lamps.bound, out.lamps.shadowedLevelLamps, fv.lamps, fv.light);
         ++v;
     }
     out.lampMs = msSince(t);

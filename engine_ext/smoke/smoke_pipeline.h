@@ -35,6 +35,7 @@ struct SmokeFrameVolume {
     GridInfo grid;
     std::vector<float> fields;  // exportRGBFloat: (density, transmittance to the sun, sky) a cell
     std::vector<float> lamps;   // exportLampTransmittance towards LampChoice::shadowed; empty if none
+    std::vector<float> light;   // lampLight (smoke_lamp_light.h): the bound lamps' light, two RGBA a cell
     SmokeBox occupied;          // the cells holding visible smoke, one cell wider (trilinear reach)
 };
 
@@ -46,12 +47,12 @@ struct SmokeFrame {
     LampChoice lamps;
     // The worker's time for this step (ms): the releases (voxelising the level into a new grid)
     // and carves queued before it, the solver, the sun's and sky's sweeps, the export with the
-    // occupied boxes, the lamp maps.
+    // occupied boxes, the lamp maps and the lamps' light on the grid.
     double commandMs = 0, stepMs = 0, lightMs = 0, exportMs = 0, lampMs = 0;
 };
 
 // The frame of `manager` as it is: the volumes' fields and occupied boxes, the lamp choice, the
-// lamp maps (out's buffers are reused). What the worker runs after each step.
+// lamp maps, the lamps' light (out's buffers are reused). What the worker runs after each step.
 void exportFrame(const SmokeManager& manager, const std::vector<SmokeLamp>& levelLamps,
                  const std::vector<SmokeLamp>& signLamps, SmokeFrame& out);
 

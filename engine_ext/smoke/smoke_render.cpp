@@ -2,6 +2,7 @@
 #include "smoke/smoke_render.h"
 
 #include "render/ogre_convert.h"
+#include "smoke/smoke_lamp_light.h"
 #include "smoke/smoke_shared.h"
 
 #include <Ogre.h>
@@ -35,6 +36,11 @@ SmokeRender::SmokeRender() {
     unshadowed.loadDynamicImage(reinterpret_cast<Ogre::uchar*>(open), 1, 1, 1, Ogre::PF_FLOAT32_RGBA);
     noLampShadow_ = Ogre::TextureManager::getSingleton().loadImage("Obscura/Smoke/NoLampShadow", Ogre::RGN_DEFAULT,
                                                                   unshadowed, Ogre::TEX_TYPE_3D, 0);
+    float dark[4] = {0.f, 0.f, 0.f, 0.f};
+    Ogre::Image unlit;
+    unlit.loadDynamicImage(reinterpret_cast<Ogre::uchar*>(dark), 1, 1, 1, Ogre::PF_FLOAT32_RGBA);
+    noLampLight_ = Ogre::TextureManager::getSingleton().loadImage("Obscura/Smoke/NoLampLight", Ogre::RGN_DEFAULT, unlit,
+                                                                 Ogre::TEX_TYPE_3D, 0);
 }
 
 SmokeRender::~SmokeRender() {
@@ -42,7 +48,7 @@ SmokeRender::~SmokeRender() {
         std::ostringstream os;
         const double n = static_cast<double>(uploads_);
         os << "smoke: " << uploads_ << " volume uploads, mean " << exportMs_ / n << " ms export (exportRGBFloat) + "
-           << lampMs_ / n << " ms lamp maps (exportLampTransmittance) on the worker, "
+           << lampMs_ / n  << " ms lamp maps and light (exportLampTransmittance, lampLight) on the worker, "
            << uploadSeconds_ * 1e3 / n << " ms blits (PF_FLOAT32_RGB, PF_FLOAT32_RGBA) on the render thread";
         // What the worker took a step (releases, solver, sun and sky, export, lamp maps): the render
         // thread's burst before the pipeline.
@@ -56,6 +62,8 @@ SmokeRender::~SmokeRender() {
     }
     for (auto& [id, tex] : textures_) Ogre::TextureManager::getSingleton().remove(tex);
     for (auto& [id, tex] : lampTextures_) Ogre::TextureManager::getSingleton().remove(tex);
+    if (lampLight_) Ogre::TextureManager::getSingleton().remove(lampLight_);
+    Ogre::TextureManager::getSingleton().remove(noLampLight_);
     Ogre::TextureManager::getSingleton().remove(noVolume_);
     Ogre::TextureManager::getSingleton().remove(noLampShadow_);
     Ogre::TextureManager::getSingleton().remove(noSunShadow_);
@@ -100,6 +108,7 @@ void SmokeRender::update(const SmokeFrame& frame, float time, float sigma) {
             lamps = textureFor(lampTextures_, liveLamps, v.id, g, Ogre::PF_FLOAT32_RGBA, "Obscura/Smoke/Lamps/");
             lamps->getBuffer()->blitFromMemory(box(Ogre::PF_FLOAT32_RGBA, v.lamps.data()));
         }
+        if (!frame.lamps.bound.empty()) uploadLampLight(bindings_.size(), g, v.light);
         ++uploads_;
         bindings_.push_back({tex, lamps, toOgre(g.origin), toOgre(g.size()), toOgre(v.occupied.min), toOgre(v.occupied.size)});
     }
@@ -114,6 +123,25 @@ void SmokeRender::update(const SmokeFrame& frame, float time, float sigma) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     uploadSeconds_ += seconds;
     lastUpdateMs_ = seconds * 1e3;
+}
+
+// Volume `slot`'s two texel blocks (A, B: smoke_lamp_light.h) into their slabs of the one atlas
+// all volumes share (one sampler however many volumes: the pass's 16 texture units are nearly all
+// taken), made again when the grid's resolution changes. Every grid is a cube of the same cells.
+void SmokeRender::uploadLampLight(std::size_t slot, const GridInfo& g, const std::vector<float>& light) {
+    const auto n = static_cast<Ogre::uint32>(g.nx);
+    if (!lampLight_ || lampLight_->getWidth() != n) {
+        if (lampLight_) Ogre::TextureManager::getSingleton().remove(lampLight_);
+        lampLight_ = Ogre::TextureManager::getSingleton().createManual(
+            "Obscura/Smoke/LampLight", Ogre::RGN_DEFAULT, Ogre::TEX_TYPE_3D, n, n,
+            n * static_cast<Ogre::uint32>(kLampLightTexels * SMOKE_MAX_VOLUMES), 0, Ogre::PF_FLOAT32_RGBA, Ogre::TU_DYNAMIC_WRITE_ONLY);
+    }
+    const std::size_t block = 4 * g.cells();
+    for (std::size_t t = 0; t < kLampLightTexels; ++t) {
+        const auto z0 = static_cast<Ogre::uint32>((slot * kLampLightTexels + t) * n);
+        Ogre::PixelBox src(n, n, n, Ogre::PF_FLOAT32_RGBA, const_cast<float*>(light.data() + t * block));
+        lampLight_->getBuffer()->blitFromMemory(src, Ogre::Box(0, 0, z0, n, n, z0 + n));
+    }
 }
 
 std::string SmokeRender::compositor() const { return bindings_.empty() ? std::string() : frame::kVolumesCompositor; }
@@ -172,26 +200,17 @@ void SmokeRender::bind(Ogre::uint32 passId, Ogre::Pass& pass, frame::Uniforms& u
     u.setArray("smokeSize", sizes, SMOKE_MAX_VOLUMES, 3);
     u.setArray("smokeBoxMin", boxMins, SMOKE_MAX_VOLUMES, 3);
     u.setArray("smokeBoxSize", boxSizes, SMOKE_MAX_VOLUMES, 3);
-    float lightPos[SMOKE_MAX_LIGHTS * 4] = {}, lightColour[SMOKE_MAX_LIGHTS * 4] = {};
-    const std::vector<SmokeLamp>& bound = lamps_.bound;
-    for (std::size_t i = 0; i < bound.size() && i < SMOKE_MAX_LIGHTS; ++i) {
-        const Ogre::Vector3 p = toOgre(bound[i].position), c = toOgre(bound[i].colour);
-        for (int k = 0; k < 3; ++k) {
-            lightPos[i * 4 + k] = p[k];
-            lightColour[i * 4 + k] = c[k];
-        }
-        lightPos[i * 4 + 3] = std::max(static_cast<float>(bound[i].range), 1e-3f);
-    }
-    u.set("smokeLightCount", static_cast<float>(bound.size()));
-    u.setArray("smokeLightPosition", lightPos, SMOKE_MAX_LIGHTS, 4);
-    u.setArray("smokeLightColour", lightColour, SMOKE_MAX_LIGHTS, 4);
+    // The lamps' light was computed on the grid (the worker's lampLight): the march reads the atlas.
+    u.set("smokeLightCount", static_cast<float>(lamps_.bound.size()));
+    u.set("smokeLampLightCells", lampLight_ ? static_cast<float>(lampLight_->getWidth()) : 1.f);
+    if (auto* unit = pass.getTextureUnitState("smokeLampLight"))
+        unit->setTexture(lampLight_ && !lamps_.bound.empty() ? lampLight_ : noLampLight_);
     float shadowedPos[kShadowedLamps * 3] = {};
     for (std::size_t i = 0; i < lamps_.shadowed.size() && i < kShadowedLamps; ++i) {
         const Ogre::Vector3 p = toOgre(lamps_.shadowed[i]);
         for (int k = 0; k < 3; ++k) shadowedPos[i * 3 + k] = p[k];
     }
     u.set("smokeShadowedCount", static_cast<float>(lamps_.shadowed.size()));
-    u.set("smokeShadowedLamps", static_cast<float>(lamps_.shadowedLevelLamps));
     u.setArray("smokeShadowedPosition", shadowedPos, kShadowedLamps, 3);
 }
 

@@ -7,6 +7,8 @@
 // Up to 4 lamps (the brightest bound level lamps, then the signs' lamps that reach the smoke;
 // smoke_lamps.h) are shadowed by the smoke and the walls in its box: their transmittances
 // (SmokeVolume::exportLampTransmittance) go to a second, PF_FLOAT32_RGBA 3D texture per volume.
+// The bound lamps' light, computed on the grid by the worker (smoke_lamp_light.h), goes to one
+// PF_FLOAT32_RGBA atlas all volumes share, two slabs each.
 // Textures follow the volumes' ids: made when one appears, dropped when it finishes.
 #pragma once
 
@@ -62,11 +64,14 @@ private:
     };
     Ogre::TexturePtr textureFor(std::map<int, Ogre::TexturePtr>& cache, std::map<int, Ogre::TexturePtr>& live, int id,
                                 const GridInfo& g, Ogre::PixelFormat format, const std::string& prefix);
+    void uploadLampLight(std::size_t slot, const GridInfo& g, const std::vector<float>& light);
     void bindSunShadow(Ogre::Pass& pass, frame::Uniforms& u, const Ogre::Camera* camera) const;
     std::map<int, Ogre::TexturePtr> textures_, lampTextures_;  // by volume id
     std::vector<Binding> bindings_;
     LampChoice lamps_;  // those lighting the smoke now (the worker chose them: smoke_lamps.h)
     Ogre::TexturePtr noLampShadow_;  // 1x1x1 (1, 1, 1, 1): nothing between any lamp and the smoke
+    Ogre::TexturePtr lampLight_;  // the lamps' light of every marched volume: two slabs each (uploadLampLight)
+    Ogre::TexturePtr noLampLight_;  // 1x1x1 (0, 0, 0, 0): no lamp lights the smoke
     Ogre::TexturePtr noVolume_;  // 1x1x1, bound to unused units
     Ogre::TexturePtr noSunShadow_;  // 1x1 PF_FLOAT32_R 1.0 (no caster): bound when there is no sun shadow map
     float sigma_ = 4, time_ = 0;

@@ -277,6 +277,10 @@ void GameApp::writeScreenshot(const std::string& path) {
         view_->waitTruth();
         for (int frame = 0; frame < 2; ++frame) present(1.0, 1000.0 / settings_.tickRate);
     }
+    // The volumetrics march a quarter of their pixels a frame and reuse the rest: a capture draws
+    // the unchanged scene until each was marched on it, in one order, so it shows the same image
+    // whatever frames a window or a headless run drew before (no tick runs meanwhile).
+    for (int frame = view_->volumeSettleFrames(); frame > 0; --frame) present(1.0, 1000.0 / settings_.tickRate);
     view_->writeScreenshot(path);
 }
 void GameApp::finishFrame() { view_->finishFrame(); }

@@ -411,6 +411,8 @@ void RenderView::writeBufferDump(const std::string& unit, const std::string& pat
     writePfm(out, path);
 }
 
+int RenderView::volumeSettleFrames() const { return frame_->volumeSettleFrames(); }
+
 void RenderView::writeScreenshot(const std::string& path) {
     Ogre::RenderTarget& t = target();
     Ogre::Image image(Ogre::PF_BYTE_RGB, t.getWidth(), t.getHeight());

@@ -84,6 +84,8 @@ public:
     // settings.truth) and the reference's rays per pixel.
     void setTruth(const std::string& show, int rays);
     bool truthShown() const;
+    // Frames to draw before a capture so the volumetrics show converged (frame::Frame::volumeSettleFrames).
+    int volumeSettleFrames() const;
     // Headless captures: waits for the reference (the next two frames then show and score it).
     void waitTruth() const;
 

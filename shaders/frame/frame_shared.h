@@ -36,8 +36,16 @@
 #define FRAME_AMBIENT_AREA_GRACE 0.02
 
 // Resolutions of the frame's own buffers that techniques' passes read: the volumetrics' light and
-// transmittance are marched at half the width and height (a full-resolution march cost ~4x on
+// transmittance are kept at half the width and height (a full-resolution march cost ~4x on
 // llvmpipe for no visible gain on smooth smoke).
 #define FRAME_VOLUME_SCALE 0.5
+// ... and marched at a quarter: each frame one pixel of every 2x2 block of the half-resolution
+// buffer, the one at the frame's phase (FRAME_VOLUME_PHASES, a 2x2 cycle: (0,0), (1,1), (1,0),
+// (0,1), the diagonal first so two frames already cover both checker colours); the other three
+// are last frames' values reprojected and clamped to the new samples around them
+// (shaders/frame/volume_resolve.frag). A quarter of the march's cost; a still view converges to
+// the half-resolution march in FRAME_VOLUME_PHASES frames.
+#define FRAME_VOLUME_SAMPLE_SCALE 0.25
+#define FRAME_VOLUME_PHASES 4
 
 #endif

@@ -15,10 +15,11 @@
 //   sky    the hemispheric ambient x how open the sky is above the cell (B, swept by the solver
 //          down through smoke and roofs), never below kSmokeIndirect (light bounced in)
 //   lamps  the level's point lights near the smoke (engine_ext/smoke/smoke_lamps.cpp picks at most
-//          SMOKE_MAX_LIGHTS), with the surfaces' falloff (1 - d / range)^2, through the phase;
-//          the brightest (smokeShadowedLamps of them, up to 4 less the signs') x the smoke's and
-//          its walls' transmittance towards them (smokeLampTransmittance: the solver swept it out
-//          from each lamp, SmokeVolume::computeLampTransmittance), the rest unshadowed.
+//          SMOKE_MAX_LIGHTS), with the surfaces' falloff (1 - d / range)^2, the brightest
+//          x the smoke's and its walls' transmittance towards them (the lamp maps), summed on the
+//          grid by the smoke's worker (smoke_lamp_light.h: two texels a cell in smokeLampLight, the
+//          light and its lamps' mean direction) and read here with one phase about that
+//          direction (smokeLampLightAt): two taps a sample, not a loop over the lamps.
 // Phases are scaled by pi: light arriving as the surfaces' irradiance E makes a white Lambertian
 // surface send E back; the same light makes smoke send (albedo x pi x phase x E) per unit of
 // opacity: isotropic scattering 0.25 E.
@@ -40,14 +41,13 @@ uniform sampler3D smokeLampMap0;   // PF_FLOAT32_RGBA: transmittance towards sha
 uniform sampler3D smokeLampMap1;
 uniform sampler3D smokeLampMap2;
 uniform sampler3D smokeLampMap3;
-uniform float smokeShadowedCount;  // lamp map channels in use (0..4)
-uniform float smokeShadowedLamps;  // the first this many are smokeLightPosition's first lamps; the signs' follow
+uniform float smokeShadowedCount;  // lamp map channels in use (0..4): the level's lamps', then the signs'
 uniform vec3 smokeShadowedPosition[4];  // world position of each channel's lamp
+uniform sampler3D smokeLampLight;  // PF_FLOAT32_RGBA atlas: volume i's A at slab 2i, B at 2i + 1 (smoke_lamp_light.h)
+uniform float smokeLampLightCells; // the grid's cells a side (the slabs' depth)
 uniform float smokeSigma;          // extinction per metre per density unit (SmokeSettings::shadowSigma)
 uniform float smokeTime;           // seconds of game time: the noise drifts
-uniform float smokeLightCount;     // 0..SMOKE_MAX_LIGHTS
-uniform vec4 smokeLightPosition[SMOKE_MAX_LIGHTS];  // world xyz, w = range (m)
-uniform vec4 smokeLightColour[SMOKE_MAX_LIGHTS];    // linear rgb, as the surfaces get it
+uniform float smokeLightCount;     // lamps lighting the smoke (0..SMOKE_MAX_LIGHTS): 0, no light to read
 uniform vec3 sunDirection;
 uniform vec3 sunColour;
 uniform vec3 skyAmbient;
@@ -83,8 +83,23 @@ vec4 smokeLampSample(int i, vec3 uvw)
     return texture(smokeLampMap3, uvw);
 }
 
+// The lamps' light scattered along -dir at uvw of volume i (smoke_lamp_light.h): A's light
+// through the phase about B's mean direction, the asymmetry scaled by B's length; the single share
+// (A.a) at g, the rest (the multiple-scattering octave) at g / 2, as the sun's.
+vec3 smokeLampLightAt(int i, vec3 uvw, vec3 dir)
+{
+    // Each slab's outer half-texel is clamped off, so no tap blends two slabs.
+    float cells = smokeLampLightCells, slabs = float(2 * SMOKE_MAX_VOLUMES);
+    float w = clamp(uvw.z, 0.5 / cells, 1.0 - 0.5 / cells);
+    vec4 light = texture(smokeLampLight, vec3(uvw.xy, (float(2 * i) + w) / slabs));
+    vec3 mean = texture(smokeLampLight, vec3(uvw.xy, (float(2 * i + 1) + w) / slabs)).xyz;
+    float k = length(mean);
+    float c = k > 1e-4 ? dot(dir, mean) / k : 0.0;
+    return light.rgb * (light.a * volumePhase(c, kSmokeG * k) + (1.0 - light.a) * volumePhase(c, 0.5 * kSmokeG * k));
+}
+
 // The transmittance from p towards each shadowed lamp (channel c: smokeShadowedPosition[c]),
-// the product over the volumes. Inside a volume's grid its lamp map at p; outside it, the map where
+// the product over the volumes: what the signs' light passes (volumes.frag). Inside a volume's grid its lamp map at p; outside it, the map where
 // the segment from p to the lamp enters the grid (what the map holds there is the rest of that
 // segment inside the grid); a segment that misses the grid passes whole.
 vec4 smokeLampTransmittance(vec3 p)
@@ -164,15 +179,15 @@ void smokeSegments(vec3 origin, vec3 dir, float maxT, inout int n, inout float s
 // The smoke at p seen along dir: rgb = the light it scatters towards the eye per unit of its
 // extinction (albedo x sun, sky and lamps through the phase), a = its extinction (per metre).
 // Where volumes overlap, their light is averaged by extinction (one volume: its own, exactly).
-// lampT: smokeLampTransmittance(p).
-vec4 smokeAt(vec3 p, vec3 dir, vec4 lampT)
+vec4 smokeAt(vec3 p, vec3 dir)
 {
     vec3 ambient = mix(groundAmbient, skyAmbient, 0.65);  // a cloud sees mostly sky
     // Light travels along -sunDirection; the eye looks along dir: scattering angle cos = dir . sun.
     float cosSun = dot(dir, sunDirection);
     vec3 sunPhase = vec3(volumePhase(cosSun, kSmokeG), 0.7 * volumePhase(cosSun, 0.5 * kSmokeG),
                          0.5 * volumePhase(cosSun, 0.25 * kSmokeG));
-    int count = int(smokeCount), lights = int(smokeLightCount), shadowed = int(smokeShadowedLamps);
+    int count = int(smokeCount);
+    bool lights = smokeLightCount > 0.5;
     vec3 scattered = vec3(0.0);
     float sigma = 0.0;
     float sunShadow = -1.0;  // the shadow map at p: read once, at the first volume with smoke here
@@ -180,7 +195,8 @@ vec4 smokeAt(vec3 p, vec3 dir, vec4 lampT)
         if (i >= count) break;
         vec3 lo = smokeBoxMin[i], hi = lo + smokeBoxSize[i];
         if (any(lessThan(p, lo)) || any(greaterThan(p, hi))) continue;
-        vec3 cell = smokeSample(i, (p - smokeMin[i]) / smokeSize[i]);
+        vec3 uvw = (p - smokeMin[i]) / smokeSize[i];
+        vec3 cell = smokeSample(i, uvw);
         // Float densities are never quite 0 where the smoke has been: below 0.004 (what the
         // 8-bit texture rounded to 0; the marched box's threshold, smoke_render.cpp) a step
         // passes 99.6 %, and the noise and lights are skipped.
@@ -194,19 +210,7 @@ vec4 smokeAt(vec3 p, vec3 dir, vec4 lampT)
         if (sunShadow < 0.0) sunShadow = smokeSunShadow(p);
         vec3 lit = sunColour * (sunShadow * dot(sunPhase, vec3(sunT, sunT2, sqrt(sunT2))))
                  + ambient * mix(kSmokeIndirect, 1.0, clamp(cell.b, 0.0, 1.0));
-        for (int l = 0; l < SMOKE_MAX_LIGHTS; ++l) {
-            if (l >= lights) break;
-            vec3 toLight = smokeLightPosition[l].xyz - p;
-            float d = length(toLight);
-            float f = max(1.0 - d / smokeLightPosition[l].w, 0.0);
-            if (f <= 0.0) continue;
-            float c = dot(dir, toLight) / max(d, 1e-4);
-            // Single scattering x the transmittance, the wider octave of multiple scattering x its
-            // square root, as the sun's (Wrenninge et al. 2013): light diffuses deeper into the
-            // cloud than it passes straight through.
-            float T = l < shadowed ? lampT[min(l, 3)] : 1.0;
-            lit += smokeLightColour[l].rgb * (f * f * (T * volumePhase(c, kSmokeG) + 0.5 * sqrt(T) * volumePhase(c, 0.5 * kSmokeG)));
-        }
+        if (lights) lit += smokeLampLightAt(i, uvw, dir);
         lit *= kSmokeAlbedo;
         if (sigma == 0.0) scattered = lit;
         else scattered = (scattered * sigma + lit * s) / (sigma + s);
