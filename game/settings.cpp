@@ -167,7 +167,7 @@ struct Option {
 
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
-                                    "vsync", "headless", "ticks", "screenshot", "volume-dump", "light-dump", "smoke-dump", "replay", "capture-dir", "record",
+                                    "vsync", "headless", "ticks", "screenshot", "volume-dump", "light-dump", "smoke-dump", "replay", "replay-draw", "capture-dir", "record",
                                     "timedemo", "config", "data-dir", "log", "debug-max-render-targets",
                                     "debug-unsupported-formats", "smoke-resolution", "truth-threads"};
 
@@ -324,6 +324,11 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
     I.add({"smoke-dump", "write the smoke grids the last frame marched to this file (smoke/smoke_dump.h, tools/signref)",
            path(&S::smokeDump, "smoke-dump")});
     I.add({"replay", "play this replay script headless (implies --headless)", path(&S::replay, "replay")});
+    I.add({"replay-draw", "a replay's frames drawn: every-frame, or captures (only those a capture reads and the last; "
+                          "the replay tests' second run)", [](S& s, W v, W where) {
+               if (v != "every-frame" && v != "captures") fail(where, "replay-draw", q(v) + ", expected every-frame or captures");
+               s.replayDraw = v;
+           }});
     I.add({"capture-dir", "folder for a replay's `capture <name>` frames (<name>.png)", path(&S::captureDir, "capture-dir")});
     I.add({"record", "record this session's inputs as a replay script to this file", path(&S::record, "record")});
     I.add({"timedemo", "play this replay script rendering every tick as fast as possible; print frame times", path(&S::timedemo, "timedemo")});

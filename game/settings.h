@@ -92,6 +92,7 @@ struct Settings {
     std::string volumeDump, lightDump, smokeDump;
     // Replays (engine_ext/replay): play a script, record one, or benchmark one
     std::string replay;          // script to play (implies headless)
+    std::string replayDraw = "every-frame";  // or "captures": only the frames a capture reads (and the last)
     std::string captureDir = "."; // where `capture <name>` writes <name>.png
     std::string record;          // write a replay of this session here
     std::string timedemo;        // play this script as fast as possible and print frame-time statistics

@@ -364,11 +364,11 @@ void Frame::renderPass(Entry& e, Ogre::uint32 passId, Ogre::Material& mat) {
     bind(e, passId, *pass, set);
 }
 
-int Frame::volumeSettleFrames() const {
+int Frame::settleVolumes() {
     const bool marched = std::any_of(chain_.begin(), chain_.end(), [](const auto& e) { return e->compositor == kVolumesCompositor; });
     if (!marched) return 0;
-    const int phases = FRAME_VOLUME_PHASES, next = static_cast<int>(volumeFrames_ % FRAME_VOLUME_PHASES);
-    return (phases - next) % phases + phases;
+    volumeFrames_ -= volumeFrames_ % FRAME_VOLUME_PHASES;  // 0 stays 0: a new chain's first frame has no history
+    return FRAME_VOLUME_PHASES;
 }
 
 void Frame::setAmbientAreas(std::vector<AmbientBox> areas) {

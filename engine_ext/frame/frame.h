@@ -89,10 +89,11 @@ public:
                                           Ogre::Material* originalMaterial, unsigned short lodIndex,
                                           const Ogre::Renderable* rend) override;
 
-    // Frames to draw of an unchanged scene before a capture shows the volumetrics converged and
-    // the same whatever frames came before (the phase cycle run from its start: every pixel marched
-    // once on this state, then clamped in one order); 0 while nothing is marched.
-    int volumeSettleFrames() const;
+    // Before a capture: rewinds the volumetrics' phase to its cycle's start and returns the frames
+    // to draw of the unchanged scene (FRAME_VOLUME_PHASES; 0 while nothing is marched), after which
+    // they show converged and the same whatever frames came before, or how many (every pixel
+    // marched once on this state, then clamped in one order).
+    int settleVolumes();
 
 private:
     struct Entry;

@@ -34,6 +34,11 @@ void Hud::addPanelSection(std::string title, std::function<void()> draw) {
     sections_.emplace_back(std::move(title), std::move(draw));
 }
 
+void Hud::recordFrame(double frameMs) {
+    frameHistory_.push_back(static_cast<float>(frameMs));
+    while (frameHistory_.size() > kFrameHistory) frameHistory_.pop_front();
+}
+
 void Hud::update(const HudState& state) {
     Ogre::ImGuiOverlay::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
@@ -73,8 +78,7 @@ void Hud::update(const HudState& state) {
         pos.y += 16;
         shadowedText(dl, pos, IM_COL32(255, 240, 200, 255), s.c_str());
     }
-    frameHistory_.push_back(static_cast<float>(state.frameMs));
-    while (frameHistory_.size() > kFrameHistory) frameHistory_.pop_front();
+    recordFrame(state.frameMs);
     drawFrameGraph();
     drawCombat(state);
 

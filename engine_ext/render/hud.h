@@ -46,6 +46,9 @@ public:
 
     // Builds this frame's UI; call once per frame before rendering.
     void update(const HudState& state);
+    // A frame not drawn (a replay's frame no capture reads) still takes its bar in the frame-time
+    // graph, so the graph a capture shows does not depend on which frames were drawn.
+    void recordFrame(double frameMs);
 
 private:
     void drawPanel();

@@ -144,7 +144,15 @@ void SmokeRender::uploadLampLight(std::size_t slot, const GridInfo& g, const std
     }
 }
 
-std::string SmokeRender::compositor() const { return bindings_.empty() ? std::string() : frame::kVolumesCompositor; }
+void SmokeRender::cull(const Ogre::Camera& view, bool shadowing) {
+    inView_ = shadowing || std::any_of(bindings_.begin(), bindings_.end(), [&view](const Binding& b) {
+                  return view.isVisible(Ogre::AxisAlignedBox(b.occupiedMin, b.occupiedMin + b.occupiedSize));
+              });
+}
+
+std::string SmokeRender::compositor() const {
+    return bindings_.empty() || !inView_ ? std::string() : frame::kVolumesCompositor;
+}
 
 std::string SmokeRender::missingFeature(const frame::Gpu& gpu) const {
     return gpu.renderTargetFormat(Ogre::PF_FLOAT32_RGBA) ? std::string() : "render targets in PF_FLOAT32_RGBA";

@@ -39,6 +39,10 @@ public:
     // its version changed; `time` is game seconds (the sub-grid noise drifts with it), `sigma` the
     // solver's shadowSigma (the march's extinction). The render thread's part of the smoke: blits.
     void update(const SmokeFrame& frame, float time, float sigma);
+    // After update(), once a frame: whether the march needs the smoke now: a marched box in the
+    // view frustum, or `shadowing` (another medium is marched this frame: the signs' shafts read
+    // the smoke's lamp maps). A cloud out of view then costs no volumetric pass (issue 31).
+    void cull(const Ogre::Camera& view, bool shadowing);
     std::size_t marched() const { return bindings_.size(); }
     std::size_t lightsBound() const { return lamps_.bound.size(); }
     std::size_t lampsShadowed() const { return lamps_.shadowed.size(); }  // channels of the lamp maps in use
@@ -68,6 +72,7 @@ private:
     void bindSunShadow(Ogre::Pass& pass, frame::Uniforms& u, const Ogre::Camera* camera) const;
     std::map<int, Ogre::TexturePtr> textures_, lampTextures_;  // by volume id
     std::vector<Binding> bindings_;
+    bool inView_ = true;  // cull()
     LampChoice lamps_;  // those lighting the smoke now (the worker chose them: smoke_lamps.h)
     Ogre::TexturePtr noLampShadow_;  // 1x1x1 (1, 1, 1, 1): nothing between any lamp and the smoke
     Ogre::TexturePtr lampLight_;  // the lamps' light of every marched volume: two slabs each (uploadLampLight)

@@ -252,19 +252,35 @@ void GameApp::tick() {
     view_->onTick(session_->events());
 }
 
-void GameApp::present(double alpha, double frameMs) {
+namespace {
+RenderView::Frame frameOf(const Settings& settings, bool menuOpen, double frameMs) {
+    RenderView::Frame frame;
+    frame.frameMs = frameMs;
+    frame.frameMsIsFixed = settings.headless;
+    frame.hudVisible = settings.hud;
+    frame.crosshair = !menuOpen;
+    return frame;
+}
+}  // namespace
+
+void GameApp::followState(double alpha) {
     view_->update(*session_, alpha);
     const RenderView::Listener ear = view_->listener();
     audio_->update(ear.position, ear.forward, ear.up, session_->sim().player().velocity);
-    RenderView::Frame frame;
-    frame.frameMs = frameMs;
-    frame.frameMsIsFixed = settings_.headless;
-    frame.hudVisible = settings_.hud;
-    frame.crosshair = !menu_->isOpen();
-    view_->draw(*session_, frame);
+}
+
+void GameApp::present(double alpha, double frameMs) {
+    followState(alpha);
+    view_->draw(*session_, frameOf(settings_, menu_->isOpen(), frameMs));
+}
+
+void GameApp::skipDraw(double alpha, double frameMs) {
+    followState(alpha);
+    view_->skipDraw(frameOf(settings_, menu_->isOpen(), frameMs));
 }
 
 bool GameApp::paused() const { return menu_->isOpen(); }
+bool GameApp::interfaceOpen() const { return menu_->isOpen() || panel_->visible(); }
 bool GameApp::quitRequested() const { return quit_ || mRoot->endRenderingQueued(); }
 std::uint64_t GameApp::simTick() const { return session_->tick(); }
 std::string GameApp::stateHashHex() const { return session_->sim().stateHashHex(); }
@@ -277,10 +293,11 @@ void GameApp::writeScreenshot(const std::string& path) {
         view_->waitTruth();
         for (int frame = 0; frame < 2; ++frame) present(1.0, 1000.0 / settings_.tickRate);
     }
-    // The volumetrics march a quarter of their pixels a frame and reuse the rest: a capture draws
-    // the unchanged scene until each was marched on it, in one order, so it shows the same image
-    // whatever frames a window or a headless run drew before (no tick runs meanwhile).
-    for (int frame = view_->volumeSettleFrames(); frame > 0; --frame) present(1.0, 1000.0 / settings_.tickRate);
+    // The volumetrics march a quarter of their pixels a frame and reuse the rest: a capture rewinds
+    // their phase and draws the unchanged scene until each was marched on it, in one order, so it
+    // shows the same image whatever frames a window or a headless run drew before, or how many
+    // (no tick runs meanwhile; --replay-draw captures draws only the frames captured).
+    for (int frame = view_->settleVolumes(); frame > 0; --frame) present(1.0, 1000.0 / settings_.tickRate);
     view_->writeScreenshot(path);
 }
 void GameApp::finishFrame() { view_->finishFrame(); }
@@ -353,7 +370,8 @@ int GameApp::run() {
     int code = 0;
     if (script_) {
         std::cout << "renderer " << rendererDescription() << "\n";
-        ReplayDriver driver(*script_, *this, !settings_.timedemo.empty(), settings_.tickRate, settings_.captureDir);
+        ReplayDriver driver(*script_, *this, !settings_.timedemo.empty(), settings_.tickRate, settings_.captureDir,
+                            settings_.replayDraw == "every-frame");
         code = runFrames(*this, driver);
         std::cout << driver.report();
     } else if (settings_.headless) {

@@ -61,7 +61,9 @@ private:
     void handleActions() override;
     void tick() override;
     void present(double alpha, double frameMs) override;
+    void skipDraw(double alpha, double frameMs) override;
     bool paused() const override;
+    bool interfaceOpen() const override;
     bool quitRequested() const override;
     std::uint64_t simTick() const override;
     // ReplayHost
@@ -73,6 +75,7 @@ private:
     double smokeRenderThreadMs() const override;
 
     void load();
+    void followState(double alpha);  // a frame's view of the state, drawn or not: camera, props, the listener
     void applyAoSettings();
     void onButton(const std::string& name, bool down);
     InputRouting routing() const;

@@ -351,6 +351,7 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     smoke_->update(smoke.frame(), static_cast<float>(smoke.seconds()), static_cast<float>(smoke.settings().shadowSigma));
     decals_->update(session.decals().list(), session.decals().version());
     signs_->update(session.signs().holes(), session.signs().version(), *camera_);
+    smoke_->cull(*camera_, !signs_->shafts().compositor().empty());
     frame_->update(static_cast<float>(smoke.seconds()));
     // The liquids' warp runs on simulation time (replays draw the same frames); the camera's
     // liquid, if any, tints and fogs the view.
@@ -366,6 +367,10 @@ void RenderView::draw(const Session& session, const Frame& frame) {
         for (std::size_t i = 0; i < ao.size(); ++i) ao[i] = rgba[i * 4];
         return ao;
     });
+}
+
+void RenderView::skipDraw(const Frame& frame) {
+    if (frame.hudVisible) hud_->recordFrame(frame.frameMs);
 }
 
 std::vector<float> RenderView::readRgba(const Ogre::TexturePtr& tex) const {
@@ -411,7 +416,7 @@ void RenderView::writeBufferDump(const std::string& unit, const std::string& pat
     writePfm(out, path);
 }
 
-int RenderView::volumeSettleFrames() const { return frame_->volumeSettleFrames(); }
+int RenderView::settleVolumes() { return frame_->settleVolumes(); }
 
 void RenderView::writeScreenshot(const std::string& path) {
     Ogre::RenderTarget& t = target();

@@ -84,8 +84,8 @@ public:
     // settings.truth) and the reference's rays per pixel.
     void setTruth(const std::string& show, int rays);
     bool truthShown() const;
-    // Frames to draw before a capture so the volumetrics show converged (frame::Frame::volumeSettleFrames).
-    int volumeSettleFrames() const;
+    // Frames to draw before a capture so the volumetrics show converged (frame::Frame::settleVolumes).
+    int settleVolumes();
     // Headless captures: waits for the reference (the next two frames then show and score it).
     void waitTruth() const;
 
@@ -103,6 +103,9 @@ public:
     Listener listener() const;
     // Once a frame: the HUD, the smoke's fields, then OGRE renders the frame.
     void draw(const Session& session, const Frame& frame);
+    // Instead of draw() in a frame nobody sees: only the HUD's frame-time graph takes the frame
+    // (the smoke's, decals' and signs' latest state goes up at the next draw()).
+    void skipDraw(const Frame& frame);
     // Waits for the frame's rendering (timed frames include their own GPU work).
     void finishFrame();
     void writeScreenshot(const std::string& path);  // throws (load-time callers: --screenshot, captures)

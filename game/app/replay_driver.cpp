@@ -19,8 +19,10 @@ double processCpuMs() {
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
 }
-// 10 frames: a new AO compositor compiles its shaders in its first two or three.
-constexpr std::size_t kTimedemoWarmupFrames = 10;
+// 10 frames: a new AO compositor compiles its shaders in its first two or three, the HUD's first
+// frame has no crosshair yet. A timedemo leaves them out of its figures; a replay that draws only
+// its captures (--replay-draw captures) still draws them, so its first capture is as every-frame's.
+constexpr std::size_t kWarmupFrames = 10;
 }  // namespace
 
 std::unique_ptr<replay::Script> prepareReplay(Settings& settings, const SettingsParser& parser) {
@@ -47,15 +49,27 @@ std::unique_ptr<replay::Script> prepareReplay(Settings& settings, const Settings
     }
     settings.vsync = false;
     if (settings.replay.size()) settings.headless = true;
+    // Frames left undrawn would leave a timedemo nothing to time, and --volume-dump reads the
+    // volumetric buffer as the frames before it left it (not settled like a capture).
+    if (settings.replayDraw == "captures" && (!settings.timedemo.empty() || !settings.volumeDump.empty()))
+        throw SettingsError((settings.sources.count("replay-draw") ? settings.sources.at("replay-draw") : "command line") +
+                            std::string(": setting 'replay-draw': captures needs --replay without --timedemo or --volume-dump"));
 
     // (An unwritable capture folder is refused before the run, by main: checkOutputsWritable.)
     return script;
 }
 
 ReplayDriver::ReplayDriver(const replay::Script& script, ReplayHost& host, bool timed, double tickRate,
-                           std::string captureDir)
-    : script_(script), host_(host), timed_(timed), fixedMs_(1000.0 / tickRate), captureDir_(std::move(captureDir)),
-      player_(script), lastMs_(fixedMs_) {}
+                           std::string captureDir, bool drawEveryFrame)
+    : script_(script), host_(host), timed_(timed), drawEveryFrame_(drawEveryFrame || timed), fixedMs_(1000.0 / tickRate),
+      captureDir_(std::move(captureDir)), player_(script), lastMs_(fixedMs_) {}
+
+FramePlan ReplayDriver::plan(const FrameHost&) {
+    FramePlan p{1, 1.0, timed_ ? lastMs_ : fixedMs_};
+    p.draw = drawEveryFrame_ || tick_ < static_cast<std::int64_t>(kWarmupFrames) || !due_.captures.empty() ||
+             tick_ == player_.lastTick();
+    return p;
+}
 
 void ReplayDriver::beforeFrame(FrameHost&) {
     start_ = std::chrono::steady_clock::now();
@@ -104,7 +118,7 @@ std::string ReplayDriver::report() const {
     for (auto& seg : segments)
         if (seg.label.empty()) seg.label = "start";
     return formatFrameStats(computeFrameStats(frameMs_), script_.fileName) + formatSmokeThread(smokeMs_) +
-           formatSegments(segments, kTimedemoWarmupFrames);
+           formatSegments(segments, kWarmupFrames);
 }
 
 }  // namespace obscura

@@ -43,10 +43,15 @@ public:
 class ReplayDriver : public RunDriver {
 public:
     // timed: a timedemo (frame times measured and shown); else captures show the fixed tick time.
-    ReplayDriver(const replay::Script& script, ReplayHost& host, bool timed, double tickRate, std::string captureDir);
+    // drawEveryFrame false (--replay-draw captures): only the frames a capture reads and the last
+    // one are drawn, the others' ticks run without a picture (a capture settles its own frames:
+    // GameApp::writeScreenshot), so a replay test's second run checks that a capture does not
+    // depend on the frames drawn before it, in a fraction of the time.
+    ReplayDriver(const replay::Script& script, ReplayHost& host, bool timed, double tickRate, std::string captureDir,
+                 bool drawEveryFrame = true);
 
     void beforeFrame(FrameHost& host) override;
-    FramePlan plan(const FrameHost&) override { return {1, 1.0, timed_ ? lastMs_ : fixedMs_}; }
+    FramePlan plan(const FrameHost&) override;
     void afterFrame(FrameHost& host) override;
     bool finished(const FrameHost&) const override { return tick_ > player_.lastTick(); }
     // 3 when a hash diverged.
@@ -60,6 +65,7 @@ private:
     const replay::Script& script_;
     ReplayHost& host_;
     bool timed_;
+    bool drawEveryFrame_;
     double fixedMs_;
     std::string captureDir_;
     ReplayPlayer player_;

@@ -12,7 +12,9 @@ int runFrames(FrameHost& host, RunDriver& driver) {
         const FramePlan plan = driver.plan(host);
         host.handleActions();
         for (int n = plan.ticks; n > 0; --n) host.tick();
-        host.present(plan.alpha, plan.frameMs);
+        // An open menu or panel is drawn whatever the plan: ImGui takes their input in a drawn frame.
+        if (plan.draw || host.interfaceOpen()) host.present(plan.alpha, plan.frameMs);
+        else host.skipDraw(plan.alpha, plan.frameMs);
         driver.afterFrame(host);
     }
     return driver.exitCode();

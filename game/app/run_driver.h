@@ -23,7 +23,11 @@ public:
     // The view between the previous and the latest tick (alpha 0..1), rendered; frameMs is what
     // the HUD shows as the frame time.
     virtual void present(double alpha, double frameMs) = 0;
+    // A frame nobody looks at: the view follows the state as present() would (camera, props,
+    // movers, the HUD's frame-time graph) but nothing is drawn.
+    virtual void skipDraw(double alpha, double frameMs) = 0;
     virtual bool paused() const = 0;          // the pause menu is open
+    virtual bool interfaceOpen() const = 0;   // the menu or the debug panel: ImGui reads their input in a drawn frame
     virtual bool quitRequested() const = 0;   // the menu's Quit, the window closed
     virtual std::uint64_t simTick() const = 0;
 };
@@ -33,6 +37,7 @@ struct FramePlan {
     int ticks = 1;
     double alpha = 1.0;
     double frameMs = 0;
+    bool draw = true;  // false: skipDraw() instead of present() (a replay's frame that no capture reads)
 };
 
 class RunDriver {

@@ -45,6 +45,9 @@ void main()
     }
     // The 3x3 new samples around the nearest one: they include the 2x2 that bracket this pixel.
     ivec2 nearest = ivec2(floor(vec2(rel) * 0.5 + 0.5));
+    // The last row or column of an odd-sized buffer lies past every phase's samples (OGRE rounds
+    // the quarter buffer down): never marched, so never taken from a history it would keep.
+    bool marchedSometime = all(lessThan(pixel, 2 * quarter));
     vec4 lo = vec4(1e30), hi = vec4(-1e30);
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
@@ -58,7 +61,7 @@ void main()
     vec2 ndc = before.xy / max(-before.z, 1e-6) * projScale;
     vec2 uvBefore = ndc * 0.5 + 0.5;
     if (flipY > 0.5) uvBefore.y = 1.0 - uvBefore.y;
-    if (volumeHistoryValid > 0.5 && before.z < 0.0 && all(greaterThanEqual(uvBefore, vec2(0.0))) && all(lessThanEqual(uvBefore, vec2(1.0)))) {
+    if (marchedSometime && volumeHistoryValid > 0.5 && before.z < 0.0 && all(greaterThanEqual(uvBefore, vec2(0.0))) && all(lessThanEqual(uvBefore, vec2(1.0)))) {
         fragColour = clamp(texture(volumeHistory, uvBefore), lo, hi);
         return;
     }

@@ -66,6 +66,21 @@ TEST(VolumeHistory, ANinetyDegreeTurnInOneTickLeavesNoGhost) {
     EXPECT_LT(ghost, 0.05 * whole) << "the old view's light stays in the buffer";
 }
 
+// Half the turn: the cloud's box stays in the view (a cloud out of view is not marched at all:
+// SmokeRender::cull), so what the turn leaves is the reprojection's and the clamp's work.
+TEST(VolumeHistory, AFortyFiveDegreeTurnKeepsTheCloudAndLeavesNoGhost) {
+    const std::string turn = script("200 mouse 2045 0\n", 200);
+    const obscura::FloatImage raw = volumeAtEnd("turn45_raw", turn, false), settled = volumeAtEnd("turn45_settled", turn, true);
+    double light = 0;
+    for (float v : settled.rgb) light += v;
+    const double ghost = meanAbsDifference(raw, settled), whole = meanAbsDifference(facingTheCloud(), settled);
+    std::cout << "after a 45-degree turn: " << ghost << " mean |light| apart from the settled buffer; the view before: " << whole
+              << "; the settled buffer's mean light " << light / static_cast<double>(settled.rgb.size()) << "\n";
+    ASSERT_GT(light / static_cast<double>(settled.rgb.size()), 0.01) << "the cloud left the view: the turn tests nothing";
+    ASSERT_GT(whole, 0.02);
+    EXPECT_LT(ghost, 0.05 * whole) << "the old view's light stays in the buffer";
+}
+
 TEST(VolumeHistory, ACameraWalkingIntoACloudSeesItAtOnce) {
     const std::string walk = script("200 key lshift down\n200 key w down\n", 235);  // 35 ticks of sprint: inside
     const obscura::FloatImage raw = volumeAtEnd("walk_raw", walk, false), settled = volumeAtEnd("walk_settled", walk, true);

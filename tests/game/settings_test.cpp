@@ -318,6 +318,17 @@ TEST(Settings, SignModeIsValidated) {
     EXPECT_EQ(errorOf({"--sign-mode", "rays"}), "command line: setting 'sign-mode': 'rays', expected off, shafts or meshuggah");
 }
 
+TEST(Settings, ReplayDrawIsValidatedAndStartupOnly) {
+    Settings s;
+    EXPECT_EQ(s.replayDraw, "every-frame");
+    for (const char* mode : {"captures", "every-frame"}) {
+        ASSERT_TRUE(parseArgs({"--replay-draw", mode}, s));
+        EXPECT_EQ(s.replayDraw, mode);
+    }
+    EXPECT_EQ(errorOf({"--replay-draw", "some"}), "command line: setting 'replay-draw': 'some', expected every-frame or captures");
+    EXPECT_FALSE(SettingsParser().isRuntime("replay-draw"));  // a replay's `set` cannot change it mid-run
+}
+
 TEST(Settings, TruthKeyIsBoundValidatedAndRuntime) {
     Settings s;
     EXPECT_EQ(s.bindings.at(Action::CycleTruth), "t");
