@@ -509,11 +509,12 @@ std::string writableFolderProblem(const std::filesystem::path& dir, bool create)
     return ok ? std::string() : "cannot be written";
 }
 
+}  // namespace
+
 std::string sourceOf(const Settings& s, const std::string& key) {
     const auto it = s.sources.find(key);
     return it == s.sources.end() ? std::string(kCommandLine) : it->second;
 }
-}  // namespace
 
 void checkOutputsWritable(const Settings& s) {
     namespace fs = std::filesystem;

@@ -136,6 +136,9 @@ void checkBindings(const Settings& s);
 // invert-mouse and every bind-*. A recording carries them (replay `setting` headers).
 std::vector<std::pair<std::string, std::string>> inputSettingValues(const Settings& s);
 
+// Where setting `key` came from, as errors name it: "file:line", or "command line".
+std::string sourceOf(const Settings& s, const std::string& key);
+
 // Before a run starts: --screenshot's and --record's folders can take a new file, and a replay's
 // --capture-dir can be made and written. Throws SettingsError naming the setting and the path.
 void checkOutputsWritable(const Settings& s);

@@ -48,6 +48,16 @@ namespace {
 // The hidden window only carries the GL context; frames go to an offscreen texture.
 constexpr unsigned kHiddenWindowSize = 64;
 constexpr double kPi = 3.14159265358979323846;
+
+// What the view needs of a frame besides the state: its time, the HUD's and crosshair's visibility.
+RenderView::Frame frameOf(const Settings& settings, bool menuOpen, double frameMs) {
+    RenderView::Frame frame;
+    frame.frameMs = frameMs;
+    frame.frameMsIsFixed = settings.headless;
+    frame.hudVisible = settings.hud;
+    frame.crosshair = !menuOpen;
+    return frame;
+}
 }  // namespace
 
 GameApp::GameApp(Settings settings, const SettingsParser& parser)
@@ -251,17 +261,6 @@ void GameApp::tick() {
     audio_->onEvents(session_->events());
     view_->onTick(session_->events());
 }
-
-namespace {
-RenderView::Frame frameOf(const Settings& settings, bool menuOpen, double frameMs) {
-    RenderView::Frame frame;
-    frame.frameMs = frameMs;
-    frame.frameMsIsFixed = settings.headless;
-    frame.hudVisible = settings.hud;
-    frame.crosshair = !menuOpen;
-    return frame;
-}
-}  // namespace
 
 void GameApp::followState(double alpha) {
     view_->update(*session_, alpha);

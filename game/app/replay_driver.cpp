@@ -52,8 +52,8 @@ std::unique_ptr<replay::Script> prepareReplay(Settings& settings, const Settings
     // Frames left undrawn would leave a timedemo nothing to time, and --volume-dump reads the
     // volumetric buffer as the frames before it left it (not settled like a capture).
     if (settings.replayDraw == "captures" && (!settings.timedemo.empty() || !settings.volumeDump.empty()))
-        throw SettingsError((settings.sources.count("replay-draw") ? settings.sources.at("replay-draw") : "command line") +
-                            std::string(": setting 'replay-draw': captures needs --replay without --timedemo or --volume-dump"));
+        throw SettingsError(sourceOf(settings, "replay-draw") +
+                            ": setting 'replay-draw': captures needs --replay without --timedemo or --volume-dump");
 
     // (An unwritable capture folder is refused before the run, by main: checkOutputsWritable.)
     return script;

@@ -54,39 +54,45 @@ const obscura::FloatImage& facingTheCloud() {
     return v;
 }
 
+// A replay's end twice, as the frame left the buffer and settled: how far apart they are (what
+// reuse left behind), how far the settled buffer is from the view facing the cloud (the
+// difference a failure would make), and the settled buffer's mean light (is the cloud in view).
+struct Reuse {
+    double left = 0, whole = 0, light = 0;
+};
+Reuse reuseAtEnd(const std::string& name, const std::string& replay) {
+    const obscura::FloatImage raw = volumeAtEnd(name + "_raw", replay, false), settled = volumeAtEnd(name + "_settled", replay, true);
+    Reuse r{meanAbsDifference(raw, settled), meanAbsDifference(facingTheCloud(), settled), 0};
+    for (float v : settled.rgb) r.light += v;
+    if (!settled.rgb.empty()) r.light /= static_cast<double>(settled.rgb.size());
+    return r;
+}
+
 }  // namespace
 
 TEST(VolumeHistory, ANinetyDegreeTurnInOneTickLeavesNoGhost) {
-    const std::string turn = script("200 mouse 4091 0\n", 200);  // 90 degrees right, before tick 200's step
-    const obscura::FloatImage raw = volumeAtEnd("turn_raw", turn, false), settled = volumeAtEnd("turn_settled", turn, true);
-    const double ghost = meanAbsDifference(raw, settled), whole = meanAbsDifference(facingTheCloud(), settled);
-    std::cout << "after the turn, the frame's volume buffer against the settled one: " << ghost
-              << " mean |light| apart; the view before the turn against it: " << whole << "\n";
-    ASSERT_GT(whole, 0.02) << "the cloud is not in the view before the turn: nothing to leave a ghost";
-    EXPECT_LT(ghost, 0.05 * whole) << "the old view's light stays in the buffer";
+    const Reuse r = reuseAtEnd("turn", script("200 mouse 4091 0\n", 200));  // 90 degrees right, before tick 200's step
+    std::cout << "after the turn, the frame's volume buffer against the settled one: " << r.left
+              << " mean |light| apart; the view before the turn against it: " << r.whole << "\n";
+    ASSERT_GT(r.whole, 0.02) << "the cloud is not in the view before the turn: nothing to leave a ghost";
+    EXPECT_LT(r.left, 0.05 * r.whole) << "the old view's light stays in the buffer";
 }
 
 // Half the turn: the cloud's box stays in the view (a cloud out of view is not marched at all:
 // SmokeRender::cull), so what the turn leaves is the reprojection's and the clamp's work.
 TEST(VolumeHistory, AFortyFiveDegreeTurnKeepsTheCloudAndLeavesNoGhost) {
-    const std::string turn = script("200 mouse 2045 0\n", 200);
-    const obscura::FloatImage raw = volumeAtEnd("turn45_raw", turn, false), settled = volumeAtEnd("turn45_settled", turn, true);
-    double light = 0;
-    for (float v : settled.rgb) light += v;
-    const double ghost = meanAbsDifference(raw, settled), whole = meanAbsDifference(facingTheCloud(), settled);
-    std::cout << "after a 45-degree turn: " << ghost << " mean |light| apart from the settled buffer; the view before: " << whole
-              << "; the settled buffer's mean light " << light / static_cast<double>(settled.rgb.size()) << "\n";
-    ASSERT_GT(light / static_cast<double>(settled.rgb.size()), 0.01) << "the cloud left the view: the turn tests nothing";
-    ASSERT_GT(whole, 0.02);
-    EXPECT_LT(ghost, 0.05 * whole) << "the old view's light stays in the buffer";
+    const Reuse r = reuseAtEnd("turn45", script("200 mouse 2045 0\n", 200));
+    std::cout << "after a 45-degree turn: " << r.left << " mean |light| apart from the settled buffer; the view before: "
+              << r.whole << "; the settled buffer's mean light " << r.light << "\n";
+    ASSERT_GT(r.light, 0.01) << "the cloud left the view: the turn tests nothing";
+    ASSERT_GT(r.whole, 0.02);
+    EXPECT_LT(r.left, 0.05 * r.whole) << "the old view's light stays in the buffer";
 }
 
 TEST(VolumeHistory, ACameraWalkingIntoACloudSeesItAtOnce) {
-    const std::string walk = script("200 key lshift down\n200 key w down\n", 235);  // 35 ticks of sprint: inside
-    const obscura::FloatImage raw = volumeAtEnd("walk_raw", walk, false), settled = volumeAtEnd("walk_settled", walk, true);
-    const double lag = meanAbsDifference(raw, settled), whole = meanAbsDifference(facingTheCloud(), settled);
-    std::cout << "inside the cloud, the frame's volume buffer against the settled one: " << lag
-              << " mean |light| apart; the view from outside against it: " << whole << "\n";
-    ASSERT_GT(whole, 0.02) << "the walk did not change the view's smoke: not inside the cloud";
-    EXPECT_LT(lag, 0.05 * whole) << "the buffer still shows the air the camera came from";
+    const Reuse r = reuseAtEnd("walk", script("200 key lshift down\n200 key w down\n", 235));  // 35 ticks of sprint: inside
+    std::cout << "inside the cloud, the frame's volume buffer against the settled one: " << r.left
+              << " mean |light| apart; the view from outside against it: " << r.whole << "\n";
+    ASSERT_GT(r.whole, 0.02) << "the walk did not change the view's smoke: not inside the cloud";
+    EXPECT_LT(r.left, 0.05 * r.whole) << "the buffer still shows the air the camera came from";
 }
