@@ -36,7 +36,8 @@ RayScene::RayScene(const std::vector<TriangleMesh>& meshes) : impl_(std::make_un
     impl_->device = rtcNewDevice("threads=1");  // the callers parallelise over pixels themselves
     if (!impl_->device) throw std::runtime_error("Embree: cannot create a device");
     impl_->scene = rtcNewScene(impl_->device);
-    for (const auto& m : meshes) {
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        const TriangleMesh& m = meshes[k];
         if (m.indices.size() < 3) continue;
         RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -50,7 +51,7 @@ RayScene::RayScene(const std::vector<TriangleMesh>& meshes) : impl_(std::make_un
                                                                    3 * sizeof(unsigned), m.indices.size() / 3));
         for (std::size_t i = 0; i < m.indices.size() / 3 * 3; ++i) idx[i] = m.indices[i];
         rtcCommitGeometry(g);
-        rtcAttachGeometry(impl_->scene, g);
+        rtcAttachGeometryByID(impl_->scene, g, static_cast<unsigned>(k));  // geomID = the mesh's index
         rtcReleaseGeometry(g);
     }
     rtcCommitScene(impl_->scene);
@@ -67,6 +68,14 @@ bool RayScene::occluded(const Vec3& o, const Vec3& d, double tnear, double tfar)
 }
 
 bool RayScene::intersect(const Vec3& o, const Vec3& d, double tnear, double tfar, double& t, Vec3& normal) const {
+    Hit hit;
+    if (!intersect(o, d, tnear, tfar, hit)) return false;
+    t = hit.t;
+    normal = hit.normal;
+    return true;
+}
+
+bool RayScene::intersect(const Vec3& o, const Vec3& d, double tnear, double tfar, Hit& hit) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRayHit rh{};
@@ -74,8 +83,10 @@ bool RayScene::intersect(const Vec3& o, const Vec3& d, double tnear, double tfar
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl_->scene, &ctx, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    t = rh.ray.tfar;
-    normal = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+    hit.t = rh.ray.tfar;
+    hit.normal = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+    hit.mesh = rh.hit.geomID;
+    hit.triangle = rh.hit.primID;
     return true;
 }
 

@@ -22,6 +22,13 @@ public:
     // The nearest hit along o + t d, t in (tnear, tfar): its t and geometric normal (not unit,
     // either side); false when there is none.
     bool intersect(const Vec3& o, const Vec3& d, double tnear, double tfar, double& t, Vec3& normal) const;
+    // The same, naming what it hit: the mesh's index in the constructor's list and the triangle's in it.
+    struct Hit {
+        double t = 0;
+        Vec3 normal;
+        unsigned mesh = 0, triangle = 0;
+    };
+    bool intersect(const Vec3& o, const Vec3& d, double tnear, double tfar, Hit& hit) const;
 
 private:
     struct Impl;

@@ -12,47 +12,12 @@
 namespace obscura::render {
 
 namespace {
-// Quake light values, `_sunlight` included, share one scale (map/quake_light.h): 200 maps to a sun
-// of colour 1.0, which with the tone map gives a bright but unclipped wall.
-constexpr double kSunlightUnit = map::kQuakeLightUnit;
-// `_sunlight2` (the sky dome) of 150 gives an ambient of about 0.4 from above.
-constexpr double kSkyDomeUnit = 375.0;
-// The ambient of a level that places lights but sets no `_minlight`: Quake's is 0; this floor (two
-// light units) keeps unlit corners a dark shape for the AO to work on (about 28/255 on a mid-grey
-// wall after the tone map) instead of flat black.
-constexpr double kLitLevelAmbient = 0.01;
 // Sun shadow map: 1024^2, focused on the view frustum, keeps wall and pillar shadows crisp at
 // play distance; on llvmpipe at 720p the 2048^2 map cost 21 ms a frame, 1024^2 costs 7 ms.
 // beyond 50 m (a long firing range) everything counts as lit.
 constexpr unsigned kShadowMapSize = 1024;
 constexpr float kShadowDistance = 50.0f;
 }  // namespace
-
-LevelLightingParams computeLevelLighting(const map::Level& level) {
-    LevelLightingParams p;
-    const map::LevelLightingKeys& k = level.lighting;
-    if (k.sunlight > 0) {
-        p.sunDirection = normalize(-k.sunTravel);
-        p.sunColour = k.sunColour * (k.sunlight / kSunlightUnit);
-    }
-    const Vec3 dome = k.domeColour * (k.dome / kSkyDomeUnit), domeBelow = k.domeBelowColour * (k.domeBelow / kSkyDomeUnit);
-    if (k.hasAmbient) {
-        // Obscura's own hemisphere keys: the ambient as given (the arena keeps its look through them).
-        p.skyAmbient = k.ambientSky;
-        p.groundAmbient = k.ambientGround;
-    } else if (k.hasMinlight || k.hasLightEntities) {
-        // Quake's ambient: `_minlight` (else the dark floor) from everywhere, plus the sky domes.
-        const Vec3 floor = k.hasMinlight ? k.minlightColour * (k.minlight / map::kQuakeLightUnit)
-                                         : Vec3{kLitLevelAmbient, kLitLevelAmbient, kLitLevelAmbient};
-        p.skyAmbient = floor + dome;
-        p.groundAmbient = floor + domeBelow;
-    } else if (k.dome > 0) {
-        // A level without lights or ambient keys keeps the default hemisphere, half of it under a dome.
-        p.skyAmbient = dome + p.skyAmbient * 0.5;
-        p.groundAmbient = p.groundAmbient + domeBelow;
-    }
-    return p;
-}
 
 void applyLevelLighting(const map::Level& level) {
     const LevelLightingParams p = computeLevelLighting(level);

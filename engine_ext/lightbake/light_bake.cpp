@@ -1,0 +1,180 @@
+// See light_bake.h. Three passes over the atlas, then the probes:
+//   1 direct    each texel: the lights in its light-grid cell (render/light_grid.h), each with a
+//               shadow ray; the sun's visibility ray.
+//   2 indirect  each texel: gatherRays cosine-weighted rays; the sky where they escape or meet
+//               sky, the albedo share of pass 1's light (lights + sun) where they meet a face.
+//   3 probes    probe_bake.cpp, from passes 1 + 2.
+#include "lightbake/light_bake.h"
+
+#include "lightbake/bake_scene.h"
+#include "map/quake_light.h"
+#include "render/light_grid.h"
+#include "render/level_light_params.h"
+#include "core/rng.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace obscura::lightbake {
+
+using detail::BakeScene;
+
+namespace {
+// Shadow rays stop this many metres short of the light: a light placed against a face is not
+// shadowed by it.
+constexpr double kLightClearance = 0.01;
+
+// An Rng for texel or probe `index` of a pass: the same draws whatever thread runs it.
+Rng rngFor(std::size_t index, std::uint64_t pass) { return Rng(0x9e3779b97f4a7c15ULL * (index + 1), pass); }
+
+double jitter(Rng& rng) { return (rng.nextU32() >> 8) * (1.0 / 16777216.0); }
+
+int threadCount(const BakeSettings& s) {
+    if (s.threads > 0) return s.threads;
+    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// The chart a texel of the atlas belongs to (or -1 for padding), for the passes' flat loops.
+std::vector<int> texelCharts(const Atlas& atlas) {
+    std::vector<int> owner(atlas.texels(), -1);
+    for (std::size_t c = 0; c < atlas.charts.size(); ++c) {
+        const Chart& ch = atlas.charts[c];
+        for (int j = 0; j < ch.h; ++j)
+            for (int i = 0; i < ch.w; ++i) owner[static_cast<std::size_t>(ch.y + j) * atlas.width + ch.x + i] = static_cast<int>(c);
+    }
+    return owner;
+}
+
+// Pass 1 at one texel: writes direct (RGBA) and the light it reflects (RGB, lights + sun).
+void directAt(const map::Level& level, const render::LightGrid& grid, const BakeScene& scene, const BakeSky& sky,
+              const Chart& chart, const Vec3& p, float* direct, float* source, std::uint64_t& rays) {
+    Vec3 sum, floorLight;
+    for (int li : grid.lightsAt(p)) {
+        const map::LevelLight& l = level.lights[li];
+        const double e = map::lightAt(l, p, chart.normal);
+        if (e == 0) continue;
+        if (l.formula == map::LightFormula::LocalMinimum) {  // a floor, no shadow (as level.frag)
+            floorLight = {std::max(floorLight.x, l.colour.x * e), std::max(floorLight.y, l.colour.y * e), std::max(floorLight.z, l.colour.z * e)};
+            continue;
+        }
+        const Vec3 toLight = l.position - p;
+        const double dist = length(toLight);
+        ++rays;
+        if (dist > kLightClearance && scene.rays().occluded(p, toLight, 0.0, 1.0 - kLightClearance / dist)) continue;
+        sum += l.colour * e;
+    }
+    sum = {std::max({sum.x, 0.0, floorLight.x}), std::max({sum.y, 0.0, floorLight.y}), std::max({sum.z, 0.0, floorLight.z})};
+    double visible = 0;
+    const double ndotl = dot(chart.normal, sky.sunDirection);
+    if (dot(sky.sunColour, sky.sunColour) > 0 && ndotl > -0.2) {  // -0.2: sun_wrap.glsl's wrap reaches that far
+        RayScene::Hit hit;
+        ++rays;
+        visible = !scene.rays().intersect(p, sky.sunDirection, 0.0, scene.far(), hit) || hit.mesh == BakeScene::kSkyMesh ? 1 : 0;
+    }
+    const Vec3 reflected = sum + sky.sunColour * (std::max(ndotl, 0.0) * visible);
+    direct[0] = static_cast<float>(sum.x);
+    direct[1] = static_cast<float>(sum.y);
+    direct[2] = static_cast<float>(sum.z);
+    direct[3] = static_cast<float>(visible);
+    source[0] = static_cast<float>(reflected.x);
+    source[1] = static_cast<float>(reflected.y);
+    source[2] = static_cast<float>(reflected.z);
+}
+}  // namespace
+
+BakeSky bakeSkyOf(const map::Level& level) {
+    const render::LevelLightingParams p = render::computeLevelLighting(level);
+    BakeSky sky;
+    sky.sunDirection = p.sunDirection;
+    sky.sunColour = p.sunColour;
+    sky.above = p.dome;
+    sky.below = p.domeBelow;
+    sky.floor = p.minlight;
+    return sky;
+}
+
+LightBake bakeLevel(const map::Level& level, const BakeSky& sky, const BakeSettings& settings,
+                    const std::function<void(const std::string&)>& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    LightBake bake;
+    std::string note;
+    bake.atlas = buildAtlas(level, settings.texel, &note);
+    if (!note.empty() && progress) progress(note);
+    const Atlas& atlas = bake.atlas;
+    const BakeScene scene(level, atlas);
+    const render::LightGrid grid = render::buildLightGrid(level);
+    const std::vector<int> owner = texelCharts(atlas);
+    const int threads = threadCount(settings);
+    std::atomic<std::uint64_t> rays{0};
+
+    bake.direct.assign(atlas.texels() * 4, 0.0f);
+    bake.indirect.assign(atlas.texels() * 3, 0.0f);
+    std::vector<float> source(atlas.texels() * 3, 0.0f);
+    std::vector<char> buried(atlas.texels(), 0);  // texels under another brush: dark, no rays
+    auto texelOf = [&](std::size_t index, int& i, int& j) -> const Chart* {
+        if (owner[index] < 0) return nullptr;
+        const Chart& c = atlas.charts[owner[index]];
+        i = static_cast<int>(index % atlas.width) - c.x;
+        j = static_cast<int>(index / atlas.width) - c.y;
+        return &c;
+    };
+
+    detail::parallelFor(atlas.texels(), threads, "lightbake: direct", progress, [&](std::size_t index) {
+        int i, j;
+        const Chart* c = texelOf(index, i, j);
+        if (!c) return;
+        const Vec3 p = scene.samplePoint(owner[index], i, j);
+        if (scene.buried(p, c->ref.brush)) {
+            buried[index] = 1;
+            return;
+        }
+        std::uint64_t count = 0;
+        directAt(level, grid, scene, sky, *c, p, &bake.direct[index * 4], &source[index * 3], count);
+        rays += count;
+    });
+
+    const int k = std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(1, settings.gatherRays)))));
+    detail::parallelFor(atlas.texels(), threads, "lightbake: bounce", progress, [&](std::size_t index) {
+        int i, j;
+        const Chart* c = texelOf(index, i, j);
+        if (!c || buried[index]) return;
+        const Vec3 p = scene.samplePoint(owner[index], i, j);
+        Rng rng = rngFor(index, 2);
+        Vec3 sum;
+        for (int a = 0; a < k; ++a)
+            for (int b = 0; b < k; ++b) {
+                const double r1 = jitter(rng), r2 = jitter(rng);
+                bool back = false;
+                sum += scene.incoming(p, detail::cosineDirection(a, b, k, r1, r2, c->s, c->t, c->normal), sky, settings.albedo, source, back);
+            }
+        sum = sum / static_cast<double>(k * k);
+        float* out = &bake.indirect[index * 3];
+        out[0] = static_cast<float>(std::max(sum.x, sky.floor.x));
+        out[1] = static_cast<float>(std::max(sum.y, sky.floor.y));
+        out[2] = static_cast<float>(std::max(sum.z, sky.floor.z));
+        rays += static_cast<std::uint64_t>(k * k);
+    });
+
+    // The probes see the faces' whole light: what they reflect of the lights and sun, and of the sky and bounce.
+    for (std::size_t t = 0; t < atlas.texels(); ++t)
+        for (int ch = 0; ch < 3; ++ch) source[t * 3 + ch] += bake.indirect[t * 3 + ch];
+    bake.probes = detail::bakeProbes(level, scene, sky, settings, source, progress, rays);
+
+    bake.stats.charts = atlas.charts.size();
+    bake.stats.buried = static_cast<std::size_t>(std::count(buried.begin(), buried.end(), 1));
+    bake.stats.texels = atlas.texels();
+    bake.stats.probes = bake.probes.count();
+    bake.stats.lights = level.lights.size();
+    bake.stats.rays = rays.load();
+    bake.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return bake;
+}
+
+void sampleLightmap(const LightBake& bake, std::size_t chart, const Vec3& p, float direct[4], float indirect[3]) {
+    bake.atlas.bilinear(bake.direct, 4, bake.atlas.charts[chart], p, direct);
+    bake.atlas.bilinear(bake.indirect, 3, bake.atlas.charts[chart], p, indirect);
+}
+
+}  // namespace obscura::lightbake
