@@ -1,4 +1,5 @@
 // See session.h.
+#include "cache_dir.h"
 #include "session.h"
 
 #include "map/map_compile.h"
@@ -9,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
@@ -83,6 +85,20 @@ std::vector<std::string> Session::modelSearchDirs(const Settings& settings) {
             std::filesystem::current_path().string()};
 }
 
+namespace {
+// The level's static light from the cache, or baked now (a line on stdout either way, and the
+// bake's progress on long levels).
+lightbake::BakeOutcome bakeLight(const map::Level& level) {
+    const auto log = [](const std::string& line) { std::cout << line << std::endl; };
+    lightbake::BakeOutcome out = lightbake::bakeOrLoad(level, lightbake::bakeSkyOf(level), {}, cacheDir(), log);
+    const lightbake::BakeStats& s = out.bake.stats;
+    std::cout << "light bake: " << (out.fromCache ? "read from the cache" : "baked") << " in " << out.seconds << " s ("
+              << s.charts << " faces, " << out.bake.atlas.width << " x " << out.bake.atlas.height << " lightmap texels, "
+              << s.probes << " probes" << (out.fromCache ? "" : ", " + std::to_string(s.rays / 1000000) + " M rays") << ")" << std::endl;
+    return out;
+}
+}  // namespace
+
 Session::Session(const Settings& settings, map::Level level, const Vec3& towardSun)
     : level_(std::move(level)),
       durations_(settings.tickRate),
@@ -91,6 +107,7 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
       smoke_(level_, colliders_, towardSun, settings.tickRate, settings.smokeResolution),
       decals_(settings, level_, modelSearchDirs(settings), sim_),
       signs_(level_, {OBSCURA_SIGN_FONT_DIR, std::filesystem::path(settings.level).parent_path().string()}),
+      light_(bakeLight(level_)),
       previousPlayer_(sim_.player()) {
     for (std::size_t i = 0; i < sim_.movers().count(); ++i) previousMoverOffsets_.push_back(sim_.movers().offset(i));
     std::vector<smoke::SmokeLamp> signLamps;  // shadowed by the smoke in the signs' shafts

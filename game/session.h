@@ -4,6 +4,7 @@
 // and advances it one tick at a time; rendering, sound and the HUD only read it.
 #pragma once
 
+#include "lightbake/bake_cache.h"
 #include "core/triangle_mesh.h"
 #include "core/vec3.h"
 #include "game_decals.h"
@@ -48,6 +49,7 @@ public:
     const GameSmoke& smoke() const { return smoke_; }
     const GameDecals& decals() const { return decals_; }
     const GameSigns& signs() const { return signs_; }
+    const lightbake::LightBake& light() const { return light_.bake; }
     const std::vector<sim::SimEvent>& events() const { return sim_.events(); }
     std::uint64_t tick() const { return sim_.tick(); }
     const TickDurations& durations() const { return durations_; }
@@ -65,6 +67,7 @@ private:
     GameSmoke smoke_;
     GameDecals decals_;
     GameSigns signs_;
+    lightbake::BakeOutcome light_;  // the level's static light (engine_ext/lightbake), from the cache or baked
     sim::PlayerState previousPlayer_;
     std::vector<Vec3> previousMoverOffsets_;
     double hitMarker_ = 0;  // 1 at a hit, fading over kHitMarkerFadeSeconds

@@ -97,7 +97,9 @@ void DecalRender::configure(Ogre::CompositionTechnique&) const {
     Ogre::Pass* pass = material_->getTechnique(0)->getPass(0);
     auto ref = [&](const char* unit, int slot) {
         if (Ogre::TextureUnitState* u = pass->getTextureUnitState(unit)) {
-            if (split_) u->setCompositorReference("Obscura/Frame/GBufferSplit", slot < 2 ? "gbufferA" : "gbufferB", slot % 2);
+            if (split_)
+                u->setCompositorReference("Obscura/Frame/GBufferSplit", slot < FRAME_GBUFFER_SPLIT ? "gbufferA" : "gbufferB",
+                                          slot < FRAME_GBUFFER_SPLIT ? slot : slot - FRAME_GBUFFER_SPLIT);
             else u->setCompositorReference("Obscura/Frame/GBuffer", "gbuffer", slot);
         }
     };

@@ -102,14 +102,16 @@ Frame::Frame(Ogre::Viewport& viewport, Ogre::Camera& camera, FrameSettings setti
     if (settings_.maxRenderTargets > 0) gpu_.renderTargets = std::min(gpu_.renderTargets, settings_.maxRenderTargets);
     gpu_.unsupportedFormats = settings_.unsupportedFormats;
     // The frame itself cannot be turned off: without these there is no picture to draw into.
-    if (gpu_.renderTargets < 2)
-        throw std::runtime_error("frame: the G-buffer needs 2 simultaneous render targets (4 to draw the scene once) "
-                                 "and this GPU has " + std::to_string(gpu_.renderTargets));
+    const int splitTargets = std::max(FRAME_GBUFFER_SPLIT, FRAME_GBUFFER_TARGETS - FRAME_GBUFFER_SPLIT);
+    if (gpu_.renderTargets < splitTargets)
+        throw std::runtime_error("frame: the G-buffer needs " + std::to_string(splitTargets) + " simultaneous render targets (" +
+                                 std::to_string(FRAME_GBUFFER_TARGETS) + " to draw the scene once) and this GPU has " +
+                                 std::to_string(gpu_.renderTargets));
     split_ = gpu_.renderTargets < FRAME_GBUFFER_TARGETS;
     if (split_)
         std::cerr << "obscura: frame: the G-buffer is drawn in two passes (this GPU has " << gpu_.renderTargets
                   << " simultaneous render targets, one pass needs " << FRAME_GBUFFER_TARGETS << ")\n";
-    for (Ogre::PixelFormat f : {Ogre::PF_A8B8G8R8, Ogre::PF_FLOAT32_R, Ogre::PF_FLOAT16_RGBA})
+    for (Ogre::PixelFormat f : {Ogre::PF_A8B8G8R8, Ogre::PF_FLOAT32_R, Ogre::PF_FLOAT16_RGBA, Ogre::PF_R11G11B10_FLOAT})
         if (!gpu_.renderTargetFormat(f))
             throw std::runtime_error("frame: the G-buffer needs render targets in " + Ogre::PixelUtil::getFormatName(f) +
                                      ", which this GPU lacks");
@@ -268,15 +270,17 @@ void Frame::publish() {
     published_["decalNormal"] = noDecals_;  // coverage 0: the G-buffer's normal as it is
     for (auto& e : chain_) {
         if (e->stage == Stage::GBuffer && e->techniques.empty()) {
-            // One 4-target texture, or the split's two 2-target ones (frame.compositor).
+            // One 5-target texture, or the split's 2- and 3-target ones (frame.compositor).
             auto target = [&](int slot) {
                 if (!split_) return e->instance->getTextureInstance("gbuffer", slot);
-                return e->instance->getTextureInstance(slot < 2 ? "gbufferA" : "gbufferB", slot % 2);
+                if (slot < FRAME_GBUFFER_SPLIT) return e->instance->getTextureInstance("gbufferA", slot);
+                return e->instance->getTextureInstance("gbufferB", slot - FRAME_GBUFFER_SPLIT);
             };
             published_["gbufferAlbedo"] = target(FRAME_GBUFFER_ALBEDO);
             published_["gbufferNormal"] = target(FRAME_GBUFFER_NORMAL);
             published_["gbufferDepth"] = target(FRAME_GBUFFER_DEPTH);
             published_["gbufferLight"] = target(FRAME_GBUFFER_LIGHT);
+            published_["gbufferAmbient"] = target(FRAME_GBUFFER_AMBIENT);
             context_.flipY = e->instance->getRenderTarget(split_ ? "gbufferA" : "gbuffer")->requiresTextureFlipping();
         } else if (e->stage == Stage::Lighting && e->techniques.empty()) {
             published_["litMap"] = e->instance->getTextureInstance("lit", 0);
@@ -457,7 +461,9 @@ Ogre::Technique* Frame::addPart(Ogre::Material& material, const Ogre::Technique&
         if (!variant) {
             variant = gm.createProgram(name, fp->getGroup(), "glsl", Ogre::GPT_FRAGMENT_PROGRAM);
             variant->setSourceFile(fp->getSourceFile());
-            variant->setParameter("preprocessor_defines", "FRAME_GBUFFER_PART=" + std::to_string(part));
+            // The program's own defines kept (the level's LEVEL_BAKED variant), the part's added.
+            const std::string own = fp->getParameter("preprocessor_defines");
+            variant->setParameter("preprocessor_defines", (own.empty() ? "" : own + ",") + "FRAME_GBUFFER_PART=" + std::to_string(part));
             variant->load();
             Ogre::GpuProgramParametersSharedPtr defaults = variant->getDefaultParameters();
             defaults->copyMatchingNamedConstantsFrom(*fp->getDefaultParameters());

@@ -3,6 +3,9 @@
 //               shadow ray; the sun's visibility ray.
 //   2 indirect  each texel: gatherRays cosine-weighted rays; the sky where they escape or meet
 //               sky, the albedo share of pass 1's light (lights + sun) where they meet a face.
+//   2b filter   the indirect light averaged over (2 kFilterRadius + 1)^2 texels of the same chart
+//               (buried texels left out): light through a small opening reaches a texel by few of
+//               its rays, and unfiltered the noise shows as a blotch a texel.
 //   3 probes    probe_bake.cpp, from passes 1 + 2.
 #include "lightbake/light_bake.h"
 
@@ -22,6 +25,10 @@ namespace obscura::lightbake {
 using detail::BakeScene;
 
 namespace {
+// Texels each side the indirect light is averaged over (2: 1.25 m at 0.25 m texels, under the
+// scale on which a room's bounce and sky light change; the direct light is never filtered).
+constexpr int kFilterRadius = 2;
+
 // Shadow rays stop this many metres short of the light: a light placed against a face is not
 // shadowed by it.
 constexpr double kLightClearance = 0.01;
@@ -156,6 +163,26 @@ LightBake bakeLevel(const map::Level& level, const BakeSky& sky, const BakeSetti
         out[2] = static_cast<float>(std::max(sum.z, sky.floor.z));
         rays += static_cast<std::uint64_t>(k * k);
     });
+
+    {
+        const std::vector<float> raw = bake.indirect;
+        detail::parallelFor(atlas.texels(), threads, "lightbake: filter", progress, [&](std::size_t index) {
+            int i, j;
+            const Chart* c = texelOf(index, i, j);
+            if (!c || buried[index]) return;
+            double sum[3] = {0, 0, 0}, weight = 0;
+            for (int dj = -kFilterRadius; dj <= kFilterRadius; ++dj)
+                for (int di = -kFilterRadius; di <= kFilterRadius; ++di) {
+                    const int x = i + di, y = j + dj;
+                    if (x < 0 || y < 0 || x >= c->w || y >= c->h) continue;
+                    const std::size_t t = static_cast<std::size_t>(c->y + y) * atlas.width + c->x + x;
+                    if (buried[t]) continue;
+                    for (int ch = 0; ch < 3; ++ch) sum[ch] += raw[t * 3 + ch];
+                    weight += 1;
+                }
+            for (int ch = 0; ch < 3; ++ch) bake.indirect[index * 3 + ch] = static_cast<float>(sum[ch] / weight);
+        });
+    }
 
     // The probes see the faces' whole light: what they reflect of the lights and sun, and of the sky and bounce.
     for (std::size_t t = 0; t < atlas.texels(); ++t)

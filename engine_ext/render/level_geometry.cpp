@@ -39,6 +39,7 @@ struct ChunkKey {
 struct Face {
     const map::LevelPolygon* poly;
     bool twoSided;  // liquids: drawn again facing in, so they show from below and from inside
+    const lightbake::Chart* chart = nullptr;  // a baked face's lightmap chart: its uv1
 };
 
 double levelSize(const map::Level& level) {
@@ -51,7 +52,7 @@ constexpr double kMinLightRange = 1e-3;
 // One section per material of the faces, each a triangle fan (convex, counter-clockwise from the
 // front); a two-sided face (liquids) again, reversed and facing in. Returns the triangles added.
 using ByMaterial = std::map<std::string, std::vector<Face>>;
-std::size_t fill(Ogre::ManualObject& mo, const ByMaterial& byMaterial) {
+std::size_t fill(Ogre::ManualObject& mo, const ByMaterial& byMaterial, const lightbake::Atlas* atlas = nullptr) {
     std::size_t triangles = 0;
     for (const auto& [material, faces] : byMaterial) {
         mo.begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
@@ -63,6 +64,11 @@ std::size_t fill(Ogre::ManualObject& mo, const ByMaterial& byMaterial) {
                     mo.position(toOgre(v.position));
                     mo.normal(toOgre(v.normal) * flip);
                     mo.textureCoord(static_cast<float>(v.u), static_cast<float>(v.v));
+                    if (f.chart) {  // a baked material's section: every face in it has a chart
+                        double u, w;
+                        atlas->atlasCoord(*f.chart, v.position, u, w);
+                        mo.textureCoord(static_cast<float>(u / atlas->width), static_cast<float>(w / atlas->height));
+                    }
                 }
                 const auto n = static_cast<Ogre::uint32>(f.poly->vertices.size());
                 for (Ogre::uint32 i = 1; i + 1 < n; ++i) {
@@ -80,10 +86,10 @@ std::size_t fill(Ogre::ManualObject& mo, const ByMaterial& byMaterial) {
 }  // namespace
 
 LevelGeometry::LevelGeometry(Ogre::SceneManager& scene, const map::Level& level, LevelMaterials& materials,
-                             double chunkSize)
+                             const lightbake::Atlas* lightmaps, double chunkSize)
     : scene_(scene) {
     node_ = scene_.getRootSceneNode()->createChildSceneNode();
-    buildMeshes(level, materials, chunkSize);
+    buildMeshes(level, materials, lightmaps, chunkSize);
     buildMovers(level, materials);
     buildLights(level);
     buildLightGrid(level);
@@ -97,14 +103,21 @@ LevelGeometry::~LevelGeometry() {
     scene_.destroySceneNode(node_);
 }
 
-void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize) {
+void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materials, const lightbake::Atlas* lightmaps,
+                                double chunkSize) {
+    // The baked faces' charts by (brush, face).
+    std::map<std::pair<int, int>, const lightbake::Chart*> charts;
+    if (lightmaps)
+        for (const auto& c : lightmaps->charts) charts[{c.ref.brush, c.ref.face}] = &c;
     // chunk -> material -> polygons
     std::map<ChunkKey, ByMaterial> chunks;
-    for (const auto& brush : level.brushes) {
+    for (std::size_t b = 0; b < level.brushes.size(); ++b) {
+        const auto& brush = level.brushes[b];
         if (!brush.visible || brush.mover) continue;  // movers: their own nodes (buildMovers)
         const bool liquid = brush.liquid != map::LiquidKind::None;
         const bool translucent = liquid && brush.liquidAlpha < 1.0;
-        for (const auto& poly : brush.faces) {
+        for (std::size_t f = 0; f < brush.faces.size(); ++f) {
+            const auto& poly = brush.faces[f];
             if (!poly.visible || poly.vertices.size() < 3) continue;
             Vec3 c;
             for (const auto& v : poly.vertices) c += v.position;
@@ -112,6 +125,12 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
             const Batch batch = translucent ? Batch::TranslucentLiquid : poly.sky ? Batch::Sky : Batch::Solid;
             const ChunkKey key{static_cast<long>(std::floor(c.x / chunkSize)), static_cast<long>(std::floor(c.y / chunkSize)),
                                static_cast<long>(std::floor(c.z / chunkSize)), batch};
+            const auto chart = charts.find({static_cast<int>(b), static_cast<int>(f)});
+            if (chart != charts.end()) {
+                chunks[key][materials.resolveBaked(poly.texture)].push_back({&poly, false, chart->second});
+                ++stats_.bakedFaces;
+                continue;
+            }
             const std::string& material =
                 liquid ? materials.resolveLiquid(poly.texture, brush.liquid, brush.liquidAlpha) : materials.resolve(poly.texture, poly.sky);
             chunks[key][material].push_back({&poly, liquid});
@@ -127,7 +146,7 @@ void LevelGeometry::buildMeshes(const map::Level& level, LevelMaterials& materia
             mo->setVisibilityFlags(kLiquidVisibilityFlag);
             ++stats_.liquidBatches;
         }
-        stats_.triangles += fill(*mo, byMaterial);
+        stats_.triangles += fill(*mo, byMaterial, lightmaps);
         stats_.batches += byMaterial.size();
         node_->attachObject(mo);
         objects_.push_back(mo);

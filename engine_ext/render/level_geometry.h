@@ -1,14 +1,16 @@
 // Turns a compiled level (map::Level) into OGRE geometry: visible brush faces batched per
 // material inside spatial chunks (one ManualObject per chunk, one section per material, each on its
 // own scene node at the chunk's centre), so a big map draws in few batches yet still frustum-culls.
-// The map's lights go into a float texture with a world grid of which lights reach each cell
-// (light_grid.h), read per pixel by level.frag: no light cap per batch. Plus an OGRE point light or
-// spotlight per map light, for the smoke.
+// Faces the light bake charted (engine_ext/lightbake) carry the lightmap's uv (uv1) and a baked
+// material (LevelMaterials::resolveBaked); the rest (movers, liquids) read the map's lights from a
+// float texture with a world grid of which lights reach each cell (light_grid.h), per pixel in
+// level.frag: no light cap per batch. Plus an OGRE point light or spotlight per map light, for the smoke.
 // Liquid faces are two-sided (each also drawn facing in); translucent ones (alpha < 1) are
 // chunked apart, in frame::kLiquidQueue, casting no shadow (shaders/level/liquid.frag).
 // RAII: everything created here is destroyed with the object.
 #pragma once
 
+#include "lightbake/lightmap_atlas.h"
 #include "map/level.h"
 
 #include <OgreTexture.h>
@@ -34,6 +36,7 @@ struct LevelGeometryStats {
     std::size_t triangles = 0;     // liquids' back faces included
     std::size_t liquidBatches = 0;  // chunks of translucent liquid (frame::kLiquidQueue)
     std::size_t lights = 0;
+    std::size_t bakedFaces = 0;         // faces drawn from the lightmaps
     double gridCell = 0;                // the light grid's cell edge, metres (light_grid.h)
     std::size_t mostLightsPerCell = 0;  // the most lights listed for one cell
 };
@@ -49,8 +52,9 @@ class LevelGeometry {
 public:
     // chunkSize: metres per chunk edge. 16 m keeps a room or two per chunk: big enough that
     // e3m4 draws in a few hundred batches, small enough that culling works and few chunks need a cut.
+    // `lightmaps`: the bake's atlas (its charts' faces drawn baked), or null for none.
     LevelGeometry(Ogre::SceneManager& scene, const map::Level& level, LevelMaterials& materials,
-                  double chunkSize = 16.0);
+                  const lightbake::Atlas* lightmaps = nullptr, double chunkSize = 16.0);
     ~LevelGeometry();
     LevelGeometry(const LevelGeometry&) = delete;
     LevelGeometry& operator=(const LevelGeometry&) = delete;
@@ -62,7 +66,7 @@ public:
     std::size_t moverCount() const { return movers_.size(); }
 
 private:
-    void buildMeshes(const map::Level& level, LevelMaterials& materials, double chunkSize);
+    void buildMeshes(const map::Level& level, LevelMaterials& materials, const lightbake::Atlas* lightmaps, double chunkSize);
     void buildMovers(const map::Level& level, LevelMaterials& materials);
     void buildLights(const map::Level& level);
     void buildLightGrid(const map::Level& level);

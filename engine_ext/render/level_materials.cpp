@@ -86,6 +86,24 @@ const std::string& LevelMaterials::resolve(const std::string& texture, bool sky)
     return cache_[key] = name;
 }
 
+const std::string& LevelMaterials::resolveBaked(const std::string& texture) {
+    const std::string key = "baked/" + lower(texture);
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+    auto& mm = Ogre::MaterialManager::getSingleton();
+    Ogre::MaterialPtr plain = mm.getByName(resolve(texture), group_);
+    if (!plain) throw std::runtime_error("material " + resolve(texture) + " is missing");
+    Ogre::MaterialPtr mat = plain->clone(key);
+    for (auto* tech : mat->getTechniques()) {
+        Ogre::Pass* pass = tech->getPass(0);
+        if (!pass->hasFragmentProgram()) continue;
+        const auto params = pass->getFragmentProgramParameters();
+        if (params->_findNamedConstantDefinition("baked")) params->setNamedConstant("baked", 1.0f);
+    }
+    generatedMaterials_.push_back(mat);
+    return cache_[key] = key;
+}
+
 const std::string& LevelMaterials::resolveLiquid(const std::string& texture, map::LiquidKind kind, double alpha) {
     if (!(alpha < 1.0)) return resolve(texture);
     const long milli = std::lround(std::clamp(alpha, 0.0, 1.0) * 1000.0);

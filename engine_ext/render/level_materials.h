@@ -31,6 +31,9 @@ public:
     // below, a clone of Obscura/Liquid (forward, translucent) with the texture's albedo, the alpha,
     // and a glow for lava and teleporters. One per texture and alpha (in 1/1000 steps).
     const std::string& resolveLiquid(const std::string& texture, map::LiquidKind kind, double alpha);
+    // The material of a baked face (a lightmap chart, engine_ext/lightbake): resolve()'s, cloned
+    // once per texture with level.frag's `baked` set, so it reads its light from the lightmaps.
+    const std::string& resolveBaked(const std::string& texture);
     std::size_t generatedCount() const { return generatedMaterials_.size(); }
     // The translucent liquid materials made so far (the frame binds the G-buffer's depth to them).
     const std::vector<Ogre::MaterialPtr>& liquidMaterials() const { return liquidMaterials_; }

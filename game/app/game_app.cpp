@@ -1,4 +1,5 @@
 // See game_app.h.
+#include "cache_dir.h"
 #include "app/game_app.h"
 
 #include "app/debug_panel.h"
@@ -78,9 +79,7 @@ void GameApp::createRoot() {
     std::string logFile = settings_.logFile;
     if (logFile.empty()) {
         // $XDG_CACHE_HOME/obscura/obscura.log (tests point XDG_CACHE_HOME into the build tree).
-        const char* xdg = std::getenv("XDG_CACHE_HOME");
-        const char* home = std::getenv("HOME");
-        const std::filesystem::path dir = std::filesystem::path(xdg && *xdg ? xdg : std::string(home ? home : "/tmp") + "/.cache") / "obscura";
+        const std::filesystem::path dir = cacheDir();
         std::error_code ec;
         std::filesystem::create_directories(dir, ec);
         logFile = (dir / "obscura.log").string();

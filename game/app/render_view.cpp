@@ -1,4 +1,5 @@
 // See render_view.h.
+#include "lightbake/baked_light_view.h"
 #include "app/render_view.h"
 
 #include "app/combat_view.h"
@@ -104,7 +105,9 @@ RenderView::RenderView(const Context& context, const Settings& settings, const S
     auto start = std::chrono::steady_clock::now();
     render::applyLevelLighting(level);
     render::createSun(*scene_, level);
-    levelGeometry_ = std::make_unique<render::LevelGeometry>(*scene_, level, *materials_);
+    levelGeometry_ = std::make_unique<render::LevelGeometry>(*scene_, level, *materials_, &session.light().atlas);
+    // After the level's materials exist: every one with the bake's units gets its textures.
+    bakedLight_ = std::make_unique<lightbake::BakedLightView>(session.light());
     liquids_ = map::LiquidQuery(level);
     // misc_model meshes, visible only: the session built their colliders from the same files.
     const auto modelDirs = Session::modelSearchDirs(settings);
@@ -191,6 +194,7 @@ RenderView::~RenderView() {
     ao_.reset();
     decals_.reset();
     props_.reset();
+    bakedLight_.reset();
     levelGeometry_.reset();
     materials_.reset();
     shaders_.removeSceneManager(scene_);

@@ -26,6 +26,7 @@ namespace RTShader { class ShaderGenerator; }
 namespace obscura {
 namespace render { class Hud; class LevelGeometry; class LevelMaterials; class PropView; struct LevelGeometryStats; }
 namespace frame { class Frame; }
+namespace lightbake { class BakedLightView; }
 namespace smoke { class SmokeRender; }
 namespace signs { class SignRender; }
 namespace ssao { class AmbientOcclusion; }
@@ -139,6 +140,7 @@ private:
     map::LiquidQuery liquids_;  // where the camera is under water, slime or lava (the tint and fog)
     std::unique_ptr<render::LevelMaterials> materials_;
     std::unique_ptr<render::LevelGeometry> levelGeometry_;
+    std::unique_ptr<lightbake::BakedLightView> bakedLight_;
     std::unique_ptr<render::PropView> props_;
     std::unique_ptr<ssao::AmbientOcclusion> ao_;
     std::unique_ptr<smoke::SmokeRender> smoke_;

@@ -12,13 +12,20 @@
 //   FRAME_GBUFFER_DEPTH   FLOAT32_R  linear view depth in metres, 0 = nothing drawn (sky)
 //   FRAME_GBUFFER_LIGHT   FLOAT16_RGBA direct irradiance (sun with its shadow, point lights), HDR;
 //                                    a = the sun's visibility here (its shadow; 0 facing away)
-// 20 bytes a pixel. Light is irradiance, not radiance: the lighting pass multiplies it by the
+//   FRAME_GBUFFER_AMBIENT R11G11B10F the indirect irradiance (sky seen, bounced light; the baked
+//                                    lightmap's, or the irradiance volume's: engine_ext/lightbake),
+//                                    which AO darkens; 11 bits of float a channel is the lightmap's
+//                                    smooth light without banding, at 4 bytes
+// 24 bytes a pixel. Light is irradiance, not radiance: the lighting pass multiplies it by the
 // albedo, so a decal that changes the albedo changes what the light makes of it.
 #define FRAME_GBUFFER_ALBEDO 0
 #define FRAME_GBUFFER_NORMAL 1
 #define FRAME_GBUFFER_DEPTH 2
 #define FRAME_GBUFFER_LIGHT 3
-#define FRAME_GBUFFER_TARGETS 4
+#define FRAME_GBUFFER_AMBIENT 4
+#define FRAME_GBUFFER_TARGETS 5
+// The split G-buffer's (on GPUs with fewer targets) first part holds the slots below this one.
+#define FRAME_GBUFFER_SPLIT 2
 
 // How fast a neighbour stops counting as the same surface in the depth-aware filters (AO blur, AO
 // and volume upsampling): weight exp(-dz/z * 50), so a tap 2 % deeper keeps 37 % of its weight and

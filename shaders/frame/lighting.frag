@@ -1,8 +1,8 @@
 #version 330 core
 // The frame's lighting pass: the light each visible surface sends to the eye, linear and HDR, into
-// the float target `lit`:  albedo x (direct light + hemispheric ambient x AO).
-// The direct light (sun with its shadow, point lights) arrives as irradiance in the G-buffer; AO
-// darkens the ambient term only. Decals change the albedo and may bend the normal first. Sky pixels (depth 0) keep their colour as shown: the tone map is
+// the float target `lit`:  albedo x (direct light + ambient x AO).
+// The direct light (sun with its shadow, point lights) and the ambient (the baked indirect light,
+// engine_ext/lightbake) arrive as irradiance in the G-buffer; AO darkens the ambient term only. Decals change the albedo and may bend the normal first. Sky pixels (depth 0) keep their colour as shown: the tone map is
 // undone for them here, so the output pass shows them unchanged.
 #include "frame_shared.h"
 #include "upsample.glsl"
@@ -12,6 +12,7 @@ uniform sampler2D gbufferAlbedo;
 uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferDepth;
 uniform sampler2D gbufferLight;
+uniform sampler2D gbufferAmbient;
 uniform sampler2D aoMap;        // (AO, depth) at the AO's resolution (engine_ext/ssao), or 1x1 open
 uniform sampler2D decalAlbedo;  // premultiplied decal albedo (gamma) + coverage (engine_ext/decals), or 1x1 clear
 uniform sampler2D decalNormal;  // premultiplied world normal + coverage (engine_ext/decals), or 1x1 clear
@@ -19,8 +20,6 @@ uniform mat4 view;              // world -> view of the camera that drew the G-b
 uniform vec3 sunDirection;      // world, unit, towards the sun (ObscuraLighting)
 uniform vec3 sunColour;         // linear RGB (ObscuraLighting)
 uniform float aoPresent;        // 0: no AO stage runs, AO is 1 everywhere
-uniform vec3 skyAmbient;        // linear RGB, light arriving from above (ObscuraLighting)
-uniform vec3 groundAmbient;     // linear RGB, light bounced from below
 uniform float exposure;         // the output's, to undo the tone map for the sky
 uniform float ambientAreaCount; // the level's env_ambient boxes (Frame::setAmbientAreas)
 uniform vec4 ambientAreaMin[FRAME_MAX_AMBIENT_AREAS];  // xyz the box's low corner (world), w its ambient scale
@@ -62,13 +61,12 @@ void main()
     vec3 gammaAlbedo = texelFetch(gbufferAlbedo, pixel, 0).rgb * (1.0 - decal.a) + decal.rgb;
     albedo = pow(gammaAlbedo, vec3(2.2));
     float ao = aoPresent > 0.5 ? upsampledAo(aoMap, vUv, depth) : 1.0;
-    float skyward = texelFetch(gbufferNormal, pixel, 0).a;
     vec4 light = texelFetch(gbufferLight, pixel, 0);
     vec3 direct = light.rgb;
     // A decal's bent normal (a bullet hole's crater and rim): the sun's share relit with it (its
-    // shadow as the G-buffer pass found it), the sky's share of the ambient turned with it. Point
-    // lights keep the surface's own normal (the G-buffer holds only their sum). Pixels no decal
-    // bends keep the G-buffer's light to the bit.
+    // shadow as the G-buffer pass found it). Point lights and the ambient keep the surface's own
+    // normal (the G-buffer holds only their sums). Pixels no decal bends keep the G-buffer's light
+    // to the bit.
     vec4 bent = texelFetch(decalNormal, min(pixel, textureSize(decalNormal, 0) - 1), 0);
     if (bent.a > 0.0) {
         vec3 nView = texelFetch(gbufferNormal, pixel, 0).xyz * 2.0 - 1.0;
@@ -76,9 +74,8 @@ void main()
         vec3 nBent = normalize(n * (1.0 - bent.a) + bent.rgb);
         direct += sunColour * (light.a * (sunWrap(dot(nBent, sunDirection)) - sunWrap(dot(n, sunDirection))));
         direct = max(direct, vec3(0.0));
-        skyward = 0.5 + 0.5 * nBent.y;
     }
-    vec3 ambient = mix(groundAmbient, skyAmbient, skyward);
+    vec3 ambient = texelFetch(gbufferAmbient, pixel, 0).rgb;
     if (ambientAreaCount > 0.5) {
         vec3 world = (inverseView * vec4(viewRayAt(vUv) * depth, 1.0)).xyz;
         ambient *= ambientScaleAt(world);

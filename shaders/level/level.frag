@@ -1,12 +1,19 @@
 #version 330 core
 // Level surfaces into the frame's G-buffer (shaders/frame/frame_shared.h): the albedo, the normal,
-// the depth and the direct light arriving here, as irradiance (linear, HDR):
+// the depth, the direct light and the ambient arriving here, as irradiance (linear, HDR):
 //   the sun (worldspawn _sunlight), shadowed through a shadow map, wrapped a little so faces
-//   turned away are not flat black
+//   turned away are not flat black;
+// a baked face (`baked`: the level's static faces, engine_ext/lightbake):
+// + the map's light entities with their shadows, from the lightmap (lightmapDirect.rgb), and the
+//   sun's shadow map times the bake's sun visibility (.a), so no seam of the map lets sun into a
+//   room the sun cannot reach
+//   ambient: the lightmap's indirect light (sky seen, one bounce; lightmapIndirect)
+// anything else (props, models, movers: no lightmap):
 // + the map's light entities with Quake's falloff (map/quake_light.h has the same maths in C++, see
-//   there for the formulas): every light listed for this point's grid cell, however many.
-// The hemispheric ambient (sky from above, ground from below), which AO darkens, is added by the
-// frame's lighting pass (shaders/frame/lighting.frag), and the tone map is applied once at the end.
+//   there for the formulas), unshadowed: every light listed for this point's grid cell
+//   ambient: the irradiance volume (baked_ambient.glsl)
+// AO darkens the ambient in the frame's lighting pass (shaders/frame/lighting.frag), and the tone
+// map is applied once at the end.
 uniform sampler2D albedoMap;
 #include "sun_shadow.glsl"  // sunShadowMap, sunShadowTexel
 uniform vec3 sunDirection;    // world space, unit, pointing towards the sun
@@ -18,11 +25,16 @@ uniform sampler2D levelLights;
 uniform vec4 lightGridOrigin;  // xyz: the grid's low corner (m); w: the cell edge (m)
 uniform vec4 lightGridSize;    // cells along x, y, z; w: the texture's width in texels
 uniform vec4 lightGridBases;   // x: the cells' first texel, y: the light numbers' first texel
+#include "baked_ambient.glsl"   // lightProbes, probeAmbient
+uniform float baked;            // 1: a level face with a lightmap chart (LevelMaterials::resolveBaked)
+uniform sampler2D lightmapDirect;    // RGBA16F: the lights' irradiance with shadows; a = the sun's visibility
+uniform sampler2D lightmapIndirect;  // RGBA16F: the indirect irradiance
 
 in vec3 vWorldPos;
 in vec3 vNormal;
 in vec2 vUv;
 in vec4 vShadowPos;
+in vec2 vLightmapUv;
 
 #include "gbuffer_out.glsl"
 #include "sun_wrap.glsl"
@@ -42,21 +54,9 @@ float sunVisibility(float ndotl)
     return sunShadowLit(vShadowPos.xy / vShadowPos.w, dot(vWorldPos, sunDirection) + 0.03 + 0.12 * (1.0 - ndotl));
 }
 
-void main()
+// The map's lights reaching this point's grid cell, unshadowed (surfaces without a lightmap).
+vec3 gridLights(vec3 n, vec3 light)
 {
-    vec3 n = normalize(vNormal);
-    // 0.7 linear = 0.85 gamma-encoded: the light grey of untextured surfaces.
-    vec4 surface = hasAlbedo < 0.5 ? vec4(vec3(pow(0.7, 1.0 / 2.2)), 1.0) : texture(albedoMap, vUv);
-    if (surface.a < alphaCutoff) discard;  // a hole: no G-buffer write, so AO and the view see through
-    vec3 albedo = surface.rgb;
-
-    vec3 light = vec3(0.0);
-    float ndotl = dot(n, sunDirection);
-    float sun = sunWrap(ndotl);
-    float visible = sun > 0.0 ? 1.0 : 0.0;
-    if (sun > 0.0 && dot(sunColour, sunColour) > 0.0) visible = sunVisibility(max(ndotl, 0.0));
-    light += sunColour * (sun * visible);
-
     vec3 floorLight = vec3(0.0);  // delay 4 lights: a floor, not a sum
     ivec3 cell = ivec3(floor((vWorldPos - lightGridOrigin.xyz) / lightGridOrigin.w));
     ivec3 cells = ivec3(lightGridSize.xyz);
@@ -108,6 +108,35 @@ void main()
         }
     }
     light = max(max(light, vec3(0.0)), floorLight);  // negative lights subtract, down to 0
+    return light;
+}
 
-    writeGBuffer(albedo, light, visible, vWorldPos, n);
+void main()
+{
+    vec3 n = normalize(vNormal);
+    // 0.7 linear = 0.85 gamma-encoded: the light grey of untextured surfaces.
+    vec4 surface = hasAlbedo < 0.5 ? vec4(vec3(pow(0.7, 1.0 / 2.2)), 1.0) : texture(albedoMap, vUv);
+    if (surface.a < alphaCutoff) discard;  // a hole: no G-buffer write, so AO and the view see through
+    vec3 albedo = surface.rgb;
+
+    vec3 light = vec3(0.0);
+    float ndotl = dot(n, sunDirection);
+    float sun = sunWrap(ndotl);
+    float visible = sun > 0.0 ? 1.0 : 0.0;
+    if (sun > 0.0 && dot(sunColour, sunColour) > 0.0) visible = sunVisibility(max(ndotl, 0.0));
+    vec3 ambient;
+    if (baked > 0.5) {
+        vec4 lightmap = texture(lightmapDirect, vLightmapUv);
+        // 2x: the bake's visibility ramps over a texel at a shadow's edge; doubled, it stays 1 up
+        // to the ramp's middle and the shadow map keeps drawing the edge.
+        visible *= clamp(2.0 * lightmap.a, 0.0, 1.0);
+        light = sunColour * (sun * visible) + lightmap.rgb;
+        ambient = texture(lightmapIndirect, vLightmapUv).rgb;
+    } else {
+        light = gridLights(n, sunColour * (sun * visible));
+        ambient = probeAmbient(vWorldPos, n);
+    }
+
+
+    writeGBuffer(albedo, light, visible, ambient, vWorldPos, n);
 }

@@ -17,6 +17,6 @@ void main()
     vec3 sky = mix(skyHorizon, skyZenith, sqrt(t));
     // Depth 0 marks "nothing here": no ambient to occlude, no surface for AO or volumes to stop at.
     // The albedo slot holds the colour as shown (the lighting pass undoes the tone map for it).
-    writeGBuffer(sky, vec3(0.0), 0.0, cameraPosition + dir * 1e6, -dir);
+    writeGBuffer(sky, vec3(0.0), 0.0, vec3(0.0), cameraPosition + dir * 1e6, -dir);
     outDepth = vec4(0.0);
 }

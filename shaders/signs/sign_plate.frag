@@ -16,6 +16,7 @@ uniform vec2 plateHalf;                    // half width, half height, metres
 uniform float plateHoleCount;
 uniform vec4 plateHoles[SIGN_MAX_HOLES];   // x, y (plate metres), radius
 #include "gbuffer_out.glsl"
+#include "baked_ambient.glsl"  // the plate's ambient: the irradiance volume (it has no lightmap)
 const vec3 kDiffuserAlbedo = vec3(0.85);   // opal acrylic, light grey
 
 void main()
@@ -33,5 +34,5 @@ void main()
         coverage = clamp(0.5 + open / max(fwidth(open), 1e-5), 0.0, 1.0);
     }
     vec3 albedo = mix(pow(plateColour, vec3(1.0 / 2.2)), kDiffuserAlbedo, coverage);
-    writeGBuffer(albedo, plateGlow * coverage, 0.0, vWorldPos, n);
+    writeGBuffer(albedo, plateGlow * coverage, 0.0, probeAmbient(vWorldPos, n), vWorldPos, n);
 }
