@@ -3,9 +3,9 @@
 //               shadow ray; the sun's visibility ray.
 //   2 indirect  each texel: gatherRays cosine-weighted rays; the sky where they escape or meet
 //               sky, the albedo share of pass 1's light (lights + sun) where they meet a face.
-//   2b filter   the indirect light averaged over (2 kFilterRadius + 1)^2 texels of the same chart
-//               (buried texels left out): light through a small opening reaches a texel by few of
-//               its rays, and unfiltered the noise shows as a blotch a texel.
+//   2b filter   the indirect light averaged over (2 kFilterRadius + 1)^2 texels of the same chart,
+//               along s then t, never across a buried texel: light through a small opening reaches
+//               a texel by few of its rays, and unfiltered the noise shows as a blotch a texel.
 //   3 probes    probe_bake.cpp, from passes 1 + 2.
 #include "lightbake/light_bake.h"
 
@@ -164,19 +164,20 @@ LightBake bakeLevel(const map::Level& level, const BakeSky& sky, const BakeSetti
         rays += static_cast<std::uint64_t>(k * k);
     });
 
-    {
+    // Separable, and neither pass steps over a buried texel: light does not cross the wall that buries them.
+    for (const bool alongT : {false, true}) {
         const std::vector<float> raw = bake.indirect;
         detail::parallelFor(atlas.texels(), threads, "lightbake: filter", progress, [&](std::size_t index) {
             int i, j;
             const Chart* c = texelOf(index, i, j);
             if (!c || buried[index]) return;
             double sum[3] = {0, 0, 0}, weight = 0;
-            for (int dj = -kFilterRadius; dj <= kFilterRadius; ++dj)
-                for (int di = -kFilterRadius; di <= kFilterRadius; ++di) {
-                    const int x = i + di, y = j + dj;
-                    if (x < 0 || y < 0 || x >= c->w || y >= c->h) continue;
+            for (const int step : {-1, 1})
+                for (int k = step < 0 ? 0 : 1; k <= kFilterRadius; ++k) {
+                    const int x = alongT ? i : i + step * k, y = alongT ? j + step * k : j;
+                    if (x < 0 || y < 0 || x >= c->w || y >= c->h) break;
                     const std::size_t t = static_cast<std::size_t>(c->y + y) * atlas.width + c->x + x;
-                    if (buried[t]) continue;
+                    if (buried[t]) break;
                     for (int ch = 0; ch < 3; ++ch) sum[ch] += raw[t * 3 + ch];
                     weight += 1;
                 }

@@ -99,10 +99,11 @@ public:
     // slice before). `towardLight` points from the smoke to the light.
     void computeTransmittance(const Vec3& towardLight);
     const std::vector<float>& transmittance() const;  // grid().cells() values, x fastest; 1 until computed
-    // How open the sky is above each cell, for the renderer's ambient light: exp(-optical depth)
-    // swept down from the grid's top, each slice taking the slice above blurred by a 3x3 binomial
-    // kernel (so it sees a widening cone of sky, not one column), with the smoke at shadowSigma and
-    // built cells (walls, roofs) opaque like computeTransmittance. 1 under open sky, ~0 under a roof.
+    // How open each cell is upwards through the smoke, for the renderer's ambient light (the smoke's
+    // own occlusion: the level's, roofs and walls, is in the baked light, engine_ext/lightbake):
+    // exp(-optical depth) swept down from the grid's top, each slice taking the slice above blurred
+    // by a 3x3 binomial kernel (so it sees a widening cone, not one column), with the smoke at
+    // shadowSigma. 1 with no smoke above, falling into a dense cloud.
     void computeSkyVisibility();
     const std::vector<float>& skyVisibility() const;  // grid().cells() values; 1 until computed
     // Transmittance towards a point light at `lamp` (world; inside the grid or not), for every

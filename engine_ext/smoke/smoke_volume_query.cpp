@@ -264,15 +264,13 @@ void SmokeVolume::computeSkyVisibility() {
     std::vector<float>& tau = impl_->opticalDepth;
     tau.assign(g.cells(), 0.f);
     const float* den = s.density.data();
-    const std::uint8_t* built = s.voxelSolid.data();
-    constexpr float kOpaque = 12.f;  // as computeTransmittance: a built cell passes e^-12
     const float halfStep = static_cast<float>(impl_->settings.shadowSigma * g.cellSize) * 0.5f;
     const std::ptrdiff_t sy = s.dims.sy, sz = s.dims.sz;
     // The top slice sees the sky through its own half cell.
     for (int k = 0; k < g.nz; ++k)
         for (int i = 0; i < g.nx; ++i) {
             const std::size_t c = g.index(i, g.ny - 1, k);
-            tau[c] = halfStep * den[c] + (built[c] == kVoxelBuilt ? kOpaque : 0.f);
+            tau[c] = halfStep * den[c];
         }
     // Each slice below: the slice above blurred by (1 2 1) x (1 2 1) / 16 (edges clamped), plus
     // half its own density and half the blurred density above.
@@ -292,7 +290,7 @@ void SmokeVolume::computeSkyVisibility() {
                         return (row(ka) + 2.f * row(k) + row(kb)) * 0.0625f;
                     };
                     const std::size_t c = g.index(i, j, k);
-                    tau[c] = blur(tau.data()) + halfStep * (den[c] + blur(den)) + (built[c] == kVoxelBuilt ? kOpaque : 0.f);
+                    tau[c] = blur(tau.data()) + halfStep * (den[c] + blur(den));
                 }
             }
         });

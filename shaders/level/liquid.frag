@@ -22,8 +22,7 @@ uniform float glow;           // 1: lava / teleporter, emissive
 uniform vec3 cameraPosition;
 uniform vec3 sunDirection;    // ObscuraLighting
 uniform vec3 sunColour;
-uniform vec3 skyAmbient;
-uniform vec3 groundAmbient;
+#include "baked_ambient.glsl"  // lightProbes, probeAmbient (and the hemisphere's skyAmbient, groundAmbient)
 uniform float liquidTime;     // ObscuraLiquid: seconds of simulation
 uniform vec3 mediumTint;      // ObscuraLiquid: the camera's liquid, or none (density 0)
 uniform vec3 mediumFog;
@@ -56,11 +55,12 @@ void main()
     float dist = length(toEye);
     vec3 v = toEye / max(dist, 1e-4);
 
-    vec3 ambient = mix(groundAmbient, skyAmbient, 0.5 + 0.5 * n.y);
+    vec3 ambient = probeAmbient(vWorldPos, n);
     vec3 light = ambient + sunColour * max(dot(n, sunDirection), 0.0);
     vec3 colour = albedo * (light + glow * kGlow);
     float fresnel = kWaterF0 + (1.0 - kWaterF0) * pow(1.0 - clamp(dot(n, v), 0.0, 1.0), 5.0);
-    colour = mix(colour, skyAmbient, fresnel * (1.0 - glow));
+    // The reflection: the light from above here (the sky where the sky is seen, a ceiling's bounce indoors).
+    colour = mix(colour, probeAmbient(vWorldPos, vec3(0.0, 1.0, 0.0)), fresnel * (1.0 - glow));
     float a = mix(alpha, 1.0, fresnel);
 
     if (mediumDensity > 0.0) {

@@ -12,8 +12,11 @@
 //          transmittance holds the smoke and the walls and roofs inside its box, the map every
 //          caster of the level, the tall building outside the box too (engine_ext/smoke/README.md,
 //          "Rendering and play", says why the product counts a wall in the box once)
-//   sky    the hemispheric ambient x how open the sky is above the cell (B, swept by the solver
-//          down through smoke and roofs), never below kSmokeIndirect (light bounced in)
+//   sky    the baked indirect light where the cloud is (engine_ext/lightbake's irradiance volume:
+//          the sky where the sky is seen, the level's bounce; black in a sealed room), read once
+//          a ray, x the smoke's own occlusion: how open the cell is upwards through the smoke
+//          above it (B, swept by the solver), never below kSmokeIndirect (the light scattered in
+//          from the sides and many times over), so a dense core is darker than its rim
 //   lamps  the level's point lights near the smoke (engine_ext/smoke/smoke_lamps.cpp picks at most
 //          SMOKE_MAX_LIGHTS), with the surfaces' falloff (1 - d / range)^2, the brightest
 //          x the smoke's and its walls' transmittance towards them (the lamp maps), summed on the
@@ -23,7 +26,7 @@
 // Phases are scaled by pi: light arriving as the surfaces' irradiance E makes a white Lambertian
 // surface send E back; the same light makes smoke send (albedo x pi x phase x E) per unit of
 // opacity: isotropic scattering 0.25 E.
-// Needs: ObscuraLighting's sun and ambient; VOLUME_MAX_SEGMENTS (volumes.frag).
+// Needs: ObscuraLighting's sun; ObscuraBakedLight and lightProbes; VOLUME_MAX_SEGMENTS (volumes.frag).
 #include "smoke_shared.h"
 #include "volume_phase.glsl"
 #include "sun_shadow.glsl"  // sunShadowMap, sunShadowTexel (bound by smoke_render.cpp)
@@ -50,8 +53,7 @@ uniform float smokeTime;           // seconds of game time: the noise drifts
 uniform float smokeLightCount;     // lamps lighting the smoke (0..SMOKE_MAX_LIGHTS): 0, no light to read
 uniform vec3 sunDirection;
 uniform vec3 sunColour;
-uniform vec3 skyAmbient;
-uniform vec3 groundAmbient;
+#include "baked_ambient.glsl"   // lightProbes, probeAmbient
 const vec3 kSmokeAlbedo = vec3(0.9, 0.9, 0.88);  // single-scattering albedo: light grey, a little warm
 const float kSmokeG = 0.3;         // Henyey-Greenstein asymmetry: smoke scatters somewhat forwards
 // Metres towards the sun a sample is moved before the shadow map's test: a volume has no slope
@@ -59,8 +61,12 @@ const float kSmokeG = 0.3;         // Henyey-Greenstein asymmetry: smoke scatter
 // just in front of a sunlit wall is not shadowed by the wall's own texels, and under the grid's
 // 0.25 m cell, so what leaks past a caster is no more than the solver's transmittance resolves.
 const float kSmokeShadowBias = 0.2;
-const float kSmokeIndirect = 0.3;  // the ambient's share that reaches smoke under a roof (bounced in;
-                                   // the surfaces' ambient there is not darkened by the roof either)
+const float kSmokeIndirect = 0.3;  // the ambient's share that reaches smoke the smoke above hides from
+                                   // the sky (scattered in from the sides and many times over)
+// The baked ambient at the first sample of a ray that has smoke (probes 1 m or more apart: one read a
+// ray, not two 3D taps a sample); `smokeAmbientRead` false until then.
+vec3 smokeAmbient;
+bool smokeAmbientRead = false;
 // A rotation (orthonormal) for the noise lattice: value noise is blocky along its lattice axes;
 // turned off the world axes it cannot line up with the grid's cells or with a view down a
 // corridor. (The blocky look smoke had in roofed corridors was the sun's light, which reached
@@ -181,7 +187,6 @@ void smokeSegments(vec3 origin, vec3 dir, float maxT, inout int n, inout float s
 // Where volumes overlap, their light is averaged by extinction (one volume: its own, exactly).
 vec4 smokeAt(vec3 p, vec3 dir)
 {
-    vec3 ambient = mix(groundAmbient, skyAmbient, 0.65);  // a cloud sees mostly sky
     // Light travels along -sunDirection; the eye looks along dir: scattering angle cos = dir . sun.
     float cosSun = dot(dir, sunDirection);
     vec3 sunPhase = vec3(volumePhase(cosSun, kSmokeG), 0.7 * volumePhase(cosSun, 0.5 * kSmokeG),
@@ -208,8 +213,12 @@ vec4 smokeAt(vec3 p, vec3 dir)
         float s = smokeSigma * cell.r * detail;
         float sunT = clamp(cell.g, 0.0, 1.0), sunT2 = sqrt(sunT);
         if (sunShadow < 0.0) sunShadow = smokeSunShadow(p);
+        if (!smokeAmbientRead) {
+            smokeAmbient = probeAmbient(p, vec3(0.0, 0.3, 0.0));  // 0.65 of the way to the up side: a cloud sees mostly sky
+            smokeAmbientRead = true;
+        }
         vec3 lit = sunColour * (sunShadow * dot(sunPhase, vec3(sunT, sunT2, sqrt(sunT2))))
-                 + ambient * mix(kSmokeIndirect, 1.0, clamp(cell.b, 0.0, 1.0));
+                 + smokeAmbient * mix(kSmokeIndirect, 1.0, clamp(cell.b, 0.0, 1.0));
         if (lights) lit += smokeLampLightAt(i, uvw, dir);
         lit *= kSmokeAlbedo;
         if (sigma == 0.0) scattered = lit;

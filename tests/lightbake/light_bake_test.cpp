@@ -46,6 +46,18 @@ TEST(LightBake, ALampStopsAtAQuarterMetreWall) {
     EXPECT_GT(lit.direct[0], 0.3f) << "the lamp's own room";
     EXPECT_EQ(beyond.direct[0], 0.0f) << "0.5 m past the wall";
     EXPECT_EQ(far.direct[0], 0.0f);
+    // A texel past the wall, on the floor and on the side wall that run under it (one face each
+    // across both rooms): neither the bilinear read nor the bake's filter carries light over.
+    const Sample close = sampleFloor(bake, level, 270, 128);
+    EXPECT_EQ(close.direct[0], 0.0f);
+    EXPECT_EQ(close.indirect[0], 0.0f);
+    const Vec3 onWall = metres(270, 256, 64), wallNormal{0, 0, 1};  // the north wall's inner face, facing -y (OGRE +z)
+    const long wall = chartAt(bake, level, onWall, wallNormal);
+    ASSERT_GE(wall, 0);
+    float d[4], ind[3];
+    sampleLightmap(bake, static_cast<std::size_t>(wall), onWall, d, ind);
+    EXPECT_EQ(d[0], 0.0f);
+    EXPECT_EQ(ind[0], 0.0f);
     // Nor does its bounce cross: the second room is sealed from the first.
     EXPECT_GT(lit.indirect[0], 0.01f);
     EXPECT_EQ(beyond.indirect[0], 0.0f);
