@@ -167,7 +167,7 @@ struct Option {
 
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
 const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
-                                    "vsync", "headless", "ticks", "screenshot", "volume-dump", "light-dump", "smoke-dump", "replay", "replay-draw", "capture-dir", "record",
+                                    "vsync", "headless", "ticks", "screenshot", "volume-dump", "light-dump", "irradiance-dump", "smoke-dump", "replay", "replay-draw", "capture-dir", "record",
                                     "timedemo", "config", "data-dir", "log", "debug-max-render-targets",
                                     "debug-unsupported-formats", "smoke-resolution", "truth-threads"};
 
@@ -321,6 +321,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
            path(&S::volumeDump, "volume-dump")});
     I.add({"light-dump", "write the last frame's surface light before the volumes (linear HDR) to this PFM file (tools/signref)",
            path(&S::lightDump, "light-dump")});
+    I.add({"irradiance-dump", "write the last frame's surface irradiance, direct + ambient before AO (linear HDR), to this PFM file (tools/lightref)",
+           path(&S::irradianceDump, "irradiance-dump")});
     I.add({"smoke-dump", "write the smoke grids the last frame marched to this file (smoke/smoke_dump.h, tools/signref)",
            path(&S::smokeDump, "smoke-dump")});
     I.add({"replay", "play this replay script headless (implies --headless)", path(&S::replay, "replay")});
@@ -530,6 +532,7 @@ void checkOutputsWritable(const Settings& s) {
     file("screenshot", s.screenshot);
     file("volume-dump", s.volumeDump);
     file("light-dump", s.lightDump);
+    file("irradiance-dump", s.irradianceDump);
     file("smoke-dump", s.smokeDump);
     file("record", s.record);
     if (!s.replay.empty()) {

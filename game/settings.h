@@ -89,7 +89,7 @@ struct Settings {
     std::string screenshot;      // PNG written from the last frame
     // tools/signref's inputs, written from the last frame (core/pfm.h, smoke/smoke_dump.h): the
     // volumetric pass's in-scattered light, the surfaces' light, the smoke grids it marched.
-    std::string volumeDump, lightDump, smokeDump;
+    std::string volumeDump, lightDump, irradianceDump, smokeDump;
     // Replays (engine_ext/replay): play a script, record one, or benchmark one
     std::string replay;          // script to play (implies headless)
     std::string replayDraw = "every-frame";  // or "captures": only the frames a capture reads (and the last)

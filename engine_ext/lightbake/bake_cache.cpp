@@ -86,6 +86,7 @@ std::uint64_t bakeKey(const map::Level& level, const BakeSky& sky, const BakeSet
     h.add(kBakeVersion);
     h.add(settings.texel);
     h.add(static_cast<std::int32_t>(settings.gatherRays));
+    h.add(static_cast<std::int32_t>(settings.secondBounceRays));
     h.add(static_cast<std::int32_t>(settings.probeRays));
     h.add(settings.probeCell);
     h.add(settings.albedo);

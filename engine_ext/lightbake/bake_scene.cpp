@@ -1,6 +1,8 @@
 // See bake_scene.h.
 #include "lightbake/bake_scene.h"
 
+#include "map/quake_light.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -143,6 +145,34 @@ Vec3 BakeScene::incoming(const Vec3& p, const Vec3& d, const BakeSky& sky, doubl
     float light[3];
     atlas_.bilinear(faceLight, 3, atlas_.charts[chart], p + d * hit.t, light);
     return Vec3{light[0], light[1], light[2]} * albedo;
+}
+
+Vec3 lightsAt(const map::Level& level, const render::LightGrid& grid, const BakeScene& scene, const Vec3& p, const Vec3& n,
+              std::uint64_t& rays) {
+    // Shadow rays stop this many metres short of the light: a light against a face is not shadowed by it.
+    constexpr double kLightClearance = 0.01;
+    Vec3 sum, floorLight;
+    for (int li : grid.lightsAt(p)) {
+        const map::LevelLight& l = level.lights[li];
+        const double e = map::lightAt(l, p, n);
+        if (e == 0) continue;
+        if (l.formula == map::LightFormula::LocalMinimum) {  // a floor, no shadow (as level.frag)
+            floorLight = {std::max(floorLight.x, l.colour.x * e), std::max(floorLight.y, l.colour.y * e), std::max(floorLight.z, l.colour.z * e)};
+            continue;
+        }
+        const Vec3 toLight = l.position - p;
+        const double dist = length(toLight);
+        ++rays;
+        if (dist > kLightClearance && scene.rays().occluded(p, toLight, 0.0, 1.0 - kLightClearance / dist)) continue;
+        sum += l.colour * e;
+    }
+    return {std::max({sum.x, 0.0, floorLight.x}), std::max({sum.y, 0.0, floorLight.y}), std::max({sum.z, 0.0, floorLight.z})};
+}
+
+bool sunReaches(const BakeScene& scene, const BakeSky& sky, const Vec3& p, std::uint64_t& rays) {
+    RayScene::Hit hit;
+    ++rays;
+    return !scene.rays().intersect(p, sky.sunDirection, 0.0, scene.far(), hit) || hit.mesh == BakeScene::kSkyMesh;
 }
 
 Vec3 cosineDirection(int a, int b, int k, double r1, double r2, const Vec3& s, const Vec3& t, const Vec3& n) {

@@ -4,6 +4,7 @@
 
 #include "lightbake/light_bake.h"
 #include "raytrace/ray_scene.h"
+#include "render/light_grid.h"
 
 #include <atomic>
 #include <cstdint>
@@ -57,6 +58,14 @@ private:
     int gx_ = 1, gy_ = 1, gz_ = 1;
     std::vector<std::vector<int>> brushCells_;
 };
+
+// The map's lights at p (normal n) with their shadow rays, in the frame's units: Quake's falloff
+// (map/quake_light.h), delay-4 lights as a floor, negative lights subtracting down to 0. `grid`
+// lists the lights reaching each cell (render/light_grid.h).
+Vec3 lightsAt(const map::Level& level, const render::LightGrid& grid, const BakeScene& scene, const Vec3& p, const Vec3& n,
+              std::uint64_t& rays);
+// Whether the sun reaches p: its ray escapes the level or meets a sky face.
+bool sunReaches(const BakeScene& scene, const BakeSky& sky, const Vec3& p, std::uint64_t& rays);
 
 // Unit direction for stratum (a, b) of k x k with jitter (r1, r2), cosine-weighted about n with
 // tangents s, t.

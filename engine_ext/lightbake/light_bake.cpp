@@ -2,7 +2,9 @@
 //   1 direct    each texel: the lights in its light-grid cell (render/light_grid.h), each with a
 //               shadow ray; the sun's visibility ray.
 //   2 indirect  each texel: gatherRays cosine-weighted rays; the sky where they escape or meet
-//               sky, the albedo share of pass 1's light (lights + sun) where they meet a face.
+//               sky, the albedo share of pass 1's light (lights + sun) where they meet a face;
+//               then secondBounceRays meeting that first bounce (a second bounce: in a closed lit
+//               room it is a tenth of the light, and the reference's third adds a few percent more).
 //   2b filter   the indirect light averaged over (2 kFilterRadius + 1)^2 texels of the same chart,
 //               along s then t, never across a buried texel: light through a small opening reaches
 //               a texel by few of its rays, and unfiltered the noise shows as a blotch a texel.
@@ -29,10 +31,6 @@ namespace {
 // scale on which a room's bounce and sky light change; the direct light is never filtered).
 constexpr int kFilterRadius = 2;
 
-// Shadow rays stop this many metres short of the light: a light placed against a face is not
-// shadowed by it.
-constexpr double kLightClearance = 0.01;
-
 // An Rng for texel or probe `index` of a pass: the same draws whatever thread runs it.
 Rng rngFor(std::size_t index, std::uint64_t pass) { return Rng(0x9e3779b97f4a7c15ULL * (index + 1), pass); }
 
@@ -57,29 +55,11 @@ std::vector<int> texelCharts(const Atlas& atlas) {
 // Pass 1 at one texel: writes direct (RGBA) and the light it reflects (RGB, lights + sun).
 void directAt(const map::Level& level, const render::LightGrid& grid, const BakeScene& scene, const BakeSky& sky,
               const Chart& chart, const Vec3& p, float* direct, float* source, std::uint64_t& rays) {
-    Vec3 sum, floorLight;
-    for (int li : grid.lightsAt(p)) {
-        const map::LevelLight& l = level.lights[li];
-        const double e = map::lightAt(l, p, chart.normal);
-        if (e == 0) continue;
-        if (l.formula == map::LightFormula::LocalMinimum) {  // a floor, no shadow (as level.frag)
-            floorLight = {std::max(floorLight.x, l.colour.x * e), std::max(floorLight.y, l.colour.y * e), std::max(floorLight.z, l.colour.z * e)};
-            continue;
-        }
-        const Vec3 toLight = l.position - p;
-        const double dist = length(toLight);
-        ++rays;
-        if (dist > kLightClearance && scene.rays().occluded(p, toLight, 0.0, 1.0 - kLightClearance / dist)) continue;
-        sum += l.colour * e;
-    }
-    sum = {std::max({sum.x, 0.0, floorLight.x}), std::max({sum.y, 0.0, floorLight.y}), std::max({sum.z, 0.0, floorLight.z})};
+    const Vec3 sum = detail::lightsAt(level, grid, scene, p, chart.normal, rays);
     double visible = 0;
     const double ndotl = dot(chart.normal, sky.sunDirection);
-    if (dot(sky.sunColour, sky.sunColour) > 0 && ndotl > -0.2) {  // -0.2: sun_wrap.glsl's wrap reaches that far
-        RayScene::Hit hit;
-        ++rays;
-        visible = !scene.rays().intersect(p, sky.sunDirection, 0.0, scene.far(), hit) || hit.mesh == BakeScene::kSkyMesh ? 1 : 0;
-    }
+    if (dot(sky.sunColour, sky.sunColour) > 0 && ndotl > 0)  // sun_share.glsl: Lambert, nothing facing away
+        visible = detail::sunReaches(scene, sky, p, rays) ? 1 : 0;
     const Vec3 reflected = sum + sky.sunColour * (std::max(ndotl, 0.0) * visible);
     direct[0] = static_cast<float>(sum.x);
     direct[1] = static_cast<float>(sum.y);
@@ -142,53 +122,80 @@ LightBake bakeLevel(const map::Level& level, const BakeSky& sky, const BakeSetti
         rays += count;
     });
 
-    const int k = std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(1, settings.gatherRays)))));
-    detail::parallelFor(atlas.texels(), threads, "lightbake: bounce", progress, [&](std::size_t index) {
-        int i, j;
-        const Chart* c = texelOf(index, i, j);
-        if (!c || buried[index]) return;
-        const Vec3 p = scene.samplePoint(owner[index], i, j);
-        Rng rng = rngFor(index, 2);
-        Vec3 sum;
-        for (int a = 0; a < k; ++a)
-            for (int b = 0; b < k; ++b) {
-                const double r1 = jitter(rng), r2 = jitter(rng);
-                bool back = false;
-                sum += scene.incoming(p, detail::cosineDirection(a, b, k, r1, r2, c->s, c->t, c->normal), sky, settings.albedo, source, back);
-            }
-        sum = sum / static_cast<double>(k * k);
-        float* out = &bake.indirect[index * 3];
-        out[0] = static_cast<float>(std::max(sum.x, sky.floor.x));
-        out[1] = static_cast<float>(std::max(sum.y, sky.floor.y));
-        out[2] = static_cast<float>(std::max(sum.z, sky.floor.z));
-        rays += static_cast<std::uint64_t>(k * k);
-    });
-
-    // Separable, and neither pass steps over a buried texel: light does not cross the wall that buries them.
-    for (const bool alongT : {false, true}) {
-        const std::vector<float> raw = bake.indirect;
-        detail::parallelFor(atlas.texels(), threads, "lightbake: filter", progress, [&](std::size_t index) {
+    // One gather over every texel: `count` rays (rounded to a square) meeting `faceLight` (RGB a
+    // texel) through the albedo, and the sky when `withSky`.
+    auto gather = [&](int count, const std::vector<float>& faceLight, bool withSky, std::uint64_t pass, const char* phase) {
+        std::vector<float> out(atlas.texels() * 3, 0.0f);
+        const int k = std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(1, count)))));
+        const BakeSky none{sky.sunDirection, {}, {}, {}, {}};
+        detail::parallelFor(atlas.texels(), threads, phase, progress, [&](std::size_t index) {
             int i, j;
             const Chart* c = texelOf(index, i, j);
             if (!c || buried[index]) return;
-            double sum[3] = {0, 0, 0}, weight = 0;
-            for (const int step : {-1, 1})
-                for (int k = step < 0 ? 0 : 1; k <= kFilterRadius; ++k) {
-                    const int x = alongT ? i : i + step * k, y = alongT ? j + step * k : j;
-                    if (x < 0 || y < 0 || x >= c->w || y >= c->h) break;
-                    const std::size_t t = static_cast<std::size_t>(c->y + y) * atlas.width + c->x + x;
-                    if (buried[t]) break;
-                    for (int ch = 0; ch < 3; ++ch) sum[ch] += raw[t * 3 + ch];
-                    weight += 1;
+            const Vec3 p = scene.samplePoint(owner[index], i, j);
+            Rng rng = rngFor(index, pass);
+            Vec3 sum;
+            for (int a = 0; a < k; ++a)
+                for (int b = 0; b < k; ++b) {
+                    const double r1 = jitter(rng), r2 = jitter(rng);
+                    bool back = false;
+                    sum += scene.incoming(p, detail::cosineDirection(a, b, k, r1, r2, c->s, c->t, c->normal), withSky ? sky : none,
+                                          settings.albedo, faceLight, back);
                 }
-            for (int ch = 0; ch < 3; ++ch) bake.indirect[index * 3 + ch] = static_cast<float>(sum[ch] / weight);
+            sum = sum / static_cast<double>(k * k);
+            for (int ch = 0; ch < 3; ++ch) out[index * 3 + ch] = static_cast<float>(ch == 0 ? sum.x : ch == 1 ? sum.y : sum.z);
+            rays += static_cast<std::uint64_t>(k * k);
         });
-    }
+        return out;
+    };
+    // Separable, and neither pass steps over a buried texel: light does not cross the wall that buries them.
+    auto filter = [&](std::vector<float>& light) {
+        for (const bool alongT : {false, true}) {
+            const std::vector<float> raw = light;
+            detail::parallelFor(atlas.texels(), threads, "lightbake: filter", progress, [&](std::size_t index) {
+                int i, j;
+                const Chart* c = texelOf(index, i, j);
+                if (!c || buried[index]) return;
+                double sum[3] = {0, 0, 0}, weight = 0;
+                for (const int step : {-1, 1})
+                    for (int k = step < 0 ? 0 : 1; k <= kFilterRadius; ++k) {
+                        const int x = alongT ? i : i + step * k, y = alongT ? j + step * k : j;
+                        if (x < 0 || y < 0 || x >= c->w || y >= c->h) break;
+                        const std::size_t t = static_cast<std::size_t>(c->y + y) * atlas.width + c->x + x;
+                        if (buried[t]) break;
+                        for (int ch = 0; ch < 3; ++ch) sum[ch] += raw[t * 3 + ch];
+                        weight += 1;
+                    }
+                for (int ch = 0; ch < 3; ++ch) light[index * 3 + ch] = static_cast<float>(sum[ch] / weight);
+            });
+        }
+    };
+    auto lap = [&, last = std::chrono::steady_clock::now()]() mutable {
+        const auto now = std::chrono::steady_clock::now();
+        const double s = std::chrono::duration<double>(now - last).count();
+        last = now;
+        return s;
+    };
+    bake.stats.directSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    lap();
+    std::vector<float> first = gather(settings.gatherRays, source, true, 2, "lightbake: bounce");
+    filter(first);
+    bake.stats.bounceSeconds = lap();
+    std::vector<float> second = gather(settings.secondBounceRays, first, false, 4, "lightbake: second bounce");
+    filter(second);
+    bake.stats.bounceSeconds += lap();
+    for (std::size_t t = 0; t < atlas.texels(); ++t)
+        for (int ch = 0; ch < 3; ++ch) {
+            const double floorLight = ch == 0 ? sky.floor.x : ch == 1 ? sky.floor.y : sky.floor.z;
+            bake.indirect[t * 3 + ch] = buried[t] ? 0.0f : static_cast<float>(std::max<double>(first[t * 3 + ch] + second[t * 3 + ch], floorLight));
+        }
 
     // The probes see the faces' whole light: what they reflect of the lights and sun, and of the sky and bounce.
     for (std::size_t t = 0; t < atlas.texels(); ++t)
         for (int ch = 0; ch < 3; ++ch) source[t * 3 + ch] += bake.indirect[t * 3 + ch];
+    lap();
     bake.probes = detail::bakeProbes(level, scene, sky, settings, source, progress, rays);
+    bake.stats.probeSeconds = lap();
 
     bake.stats.charts = atlas.charts.size();
     bake.stats.buried = static_cast<std::size_t>(std::count(buried.begin(), buried.end(), 1));

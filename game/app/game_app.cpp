@@ -395,6 +395,7 @@ int GameApp::run() {
     }
     if (!settings_.volumeDump.empty()) view_->writeBufferDump("volumeMap", settings_.volumeDump);
     if (!settings_.lightDump.empty()) view_->writeBufferDump("litMap", settings_.lightDump);
+    if (!settings_.irradianceDump.empty()) view_->writeIrradianceDump(settings_.irradianceDump);
     if (!settings_.smokeDump.empty()) smoke::writeSmokeDump(session_->smoke().dump(), settings_.smokeDump);
     if (recorder_) writeRecording();
     std::cout << summaryLine() << "\n";

@@ -420,6 +420,19 @@ void RenderView::writeBufferDump(const std::string& unit, const std::string& pat
     writePfm(out, path);
 }
 
+void RenderView::writeIrradianceDump(const std::string& path) {
+    const Ogre::TexturePtr direct = frame_->published("gbufferLight"), ambient = frame_->published("gbufferAmbient");
+    if (!direct || !ambient) throw std::runtime_error(path + ": the frame has no G-buffer light");
+    FloatImage out;
+    out.width = static_cast<int>(direct->getWidth());
+    out.height = static_cast<int>(direct->getHeight());
+    const std::vector<float> d = readRgba(direct), a = readRgba(ambient);
+    out.rgb.resize(static_cast<std::size_t>(out.width) * out.height * 3);
+    for (std::size_t i = 0; i < d.size() / 4; ++i)
+        for (int c = 0; c < 3; ++c) out.rgb[i * 3 + c] = d[i * 4 + c] + a[i * 4 + c];
+    writePfm(out, path);
+}
+
 int RenderView::settleVolumes() { return frame_->settleVolumes(); }
 
 void RenderView::writeScreenshot(const std::string& path) {

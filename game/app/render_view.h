@@ -113,6 +113,8 @@ public:
     // The last frame's HDR buffers as PFM (core/pfm.h) for tools/signref: `volumeMap` (the
     // volumetric pass's in-scattered light, half resolution; zeros when nothing was marched) and
     // `litMap` (the surfaces' light before the volumes, full resolution). Throws naming the file.
+    // The G-buffer's direct + ambient irradiance (before AO and albedo) as a PFM (tools/lightref).
+    void writeIrradianceDump(const std::string& path);
     void writeBufferDump(const std::string& unit, const std::string& path);
     std::string saveScreenshot(const std::string& path) noexcept;  // in the frame (F12): the problem, or empty
 

@@ -6,7 +6,7 @@
 // undone for them here, so the output pass shows them unchanged.
 #include "frame_shared.h"
 #include "upsample.glsl"
-#include "sun_wrap.glsl"
+#include "sun_share.glsl"
 #include "view_ray.glsl"
 uniform sampler2D gbufferAlbedo;
 uniform sampler2D gbufferNormal;
@@ -72,7 +72,7 @@ void main()
         vec3 nView = texelFetch(gbufferNormal, pixel, 0).xyz * 2.0 - 1.0;
         vec3 n = normalize(transpose(mat3(view)) * nView);
         vec3 nBent = normalize(n * (1.0 - bent.a) + bent.rgb);
-        direct += sunColour * (light.a * (sunWrap(dot(nBent, sunDirection)) - sunWrap(dot(n, sunDirection))));
+        direct += sunColour * (light.a * (sunShare(dot(nBent, sunDirection)) - sunShare(dot(n, sunDirection))));
         direct = max(direct, vec3(0.0));
     }
     vec3 ambient = texelFetch(gbufferAmbient, pixel, 0).rgb;

@@ -37,7 +37,7 @@ in vec4 vShadowPos;
 in vec2 vLightmapUv;
 
 #include "gbuffer_out.glsl"
-#include "sun_wrap.glsl"
+#include "sun_share.glsl"
 // Materials without an albedo texture (the GBuffer scheme's shared fallback) count as light grey.
 uniform float hasAlbedo;
 // Fence textures (`{` names): texels with alpha below this are holes (0.5); 0 = opaque surfaces.
@@ -121,7 +121,7 @@ void main()
 
     vec3 light = vec3(0.0);
     float ndotl = dot(n, sunDirection);
-    float sun = sunWrap(ndotl);
+    float sun = sunShare(ndotl);
     float visible = sun > 0.0 ? 1.0 : 0.0;
     if (sun > 0.0 && dot(sunColour, sunColour) > 0.0) visible = sunVisibility(max(ndotl, 0.0));
     vec3 ambient;

@@ -53,10 +53,10 @@ int main(int argc, char** argv) {
         const auto& s = out.bake.stats;
         std::error_code ec;
         const auto bytes = std::filesystem::file_size(out.file, ec);
-        std::printf("%s: %s in %.3f s: %zu faces, atlas %d x %d (%.3f m a texel, %.0f%% buried), %zu probes (%.2f m), %zu lights, %.1f M rays; %s %.1f MB\n",
+        std::printf("%s: %s in %.3f s: %zu faces, atlas %d x %d (%.3f m a texel, %.0f%% buried), %zu probes (%.2f m), %zu lights, %.1f M rays (direct %.1f s, bounces %.1f s, probes %.1f s); %s %.1f MB\n",
                     levelPath.c_str(), out.fromCache ? "read from the cache" : "baked", out.seconds, s.charts,
                     out.bake.atlas.width, out.bake.atlas.height, out.bake.atlas.texel, 100.0 * s.buried / std::max<std::size_t>(1, s.texels), s.probes, out.bake.probes.cell, s.lights,
-                    s.rays / 1e6, out.file.c_str(), ec ? 0.0 : bytes / 1e6);
+                    s.rays / 1e6, s.directSeconds, s.bounceSeconds, s.probeSeconds, out.file.c_str(), ec ? 0.0 : bytes / 1e6);
     } catch (const std::exception& e) {
         std::cerr << "obscura_lightbake: " << e.what() << "\n";
         return 1;
