@@ -15,7 +15,7 @@
 namespace obscura::lightbake {
 
 // Bumped whenever the bake's arithmetic or the file's layout changes (old files then read as stale).
-constexpr std::uint32_t kBakeVersion = 5;
+constexpr std::uint32_t kBakeVersion = 6;
 
 std::uint64_t bakeKey(const map::Level& level, const BakeSky& sky, const BakeSettings& settings);
 

@@ -61,10 +61,13 @@ BakeScene::BakeScene(const map::Level& level, const Atlas& atlas) : atlas_(atlas
         auto& mesh = meshes[kFaceMesh];
         const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
         for (const auto& v : face.vertices) {
-            mesh.vertices.push_back(v.position);
             polygon2d_[c].push_back(dot(v.position, chart.s));
             polygon2d_[c].push_back(dot(v.position, chart.t));
         }
+        // A fence (a `{` texture) casts no baked shadow: its holes are alpha-tested, and the
+        // sun's shadow map draws them; the bake would make a solid shadow of it.
+        if (face.fence) continue;
+        for (const auto& v : face.vertices) mesh.vertices.push_back(v.position);
         for (std::uint32_t k = 1; k + 1 < face.vertices.size(); ++k) {
             mesh.indices.insert(mesh.indices.end(), {base, base + k, base + k + 1});
             triangleChart_.push_back(c);

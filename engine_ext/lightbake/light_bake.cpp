@@ -207,6 +207,21 @@ LightBake bakeLevel(const map::Level& level, const BakeSky& sky, const BakeSetti
     return bake;
 }
 
+long chartAt(const LightBake& bake, const map::Level& level, const Vec3& p, const Vec3& n) {
+    for (std::size_t c = 0; c < bake.atlas.charts.size(); ++c) {
+        const Chart& ch = bake.atlas.charts[c];
+        if (dot(ch.normal, n) < 0.999 || std::abs(dot(ch.normal, p) - ch.planeD) > 1e-6) continue;
+        const auto& face = level.brushes[ch.ref.brush].faces[ch.ref.face];
+        bool inside = true;
+        for (std::size_t k = 0; k < face.vertices.size() && inside; ++k) {
+            const Vec3 a = face.vertices[k].position, b = face.vertices[(k + 1) % face.vertices.size()].position;
+            inside = dot(cross(b - a, p - a), ch.normal) >= -1e-9;
+        }
+        if (inside) return static_cast<long>(c);
+    }
+    return -1;
+}
+
 void sampleLightmap(const LightBake& bake, std::size_t chart, const Vec3& p, float direct[4], float indirect[3]) {
     bake.atlas.bilinear(bake.direct, 4, bake.atlas.charts[chart], p, direct);
     bake.atlas.bilinear(bake.indirect, 3, bake.atlas.charts[chart], p, indirect);

@@ -75,6 +75,10 @@ struct LightBake {
 LightBake bakeLevel(const map::Level& level, const BakeSky& sky, const BakeSettings& settings,
                     const std::function<void(const std::string&)>& progress = {});
 
+// The chart of the baked face through p (within 1 um of its plane) with normal n (within 2.6
+// degrees), or -1 when none: where tests and tools read the lightmap at a point.
+long chartAt(const LightBake& bake, const map::Level& level, const Vec3& p, const Vec3& n);
+
 // The baked direct light (rgb) and sun visibility (a) at a point of a baked face, bilinear as the
 // GPU reads it (tests and the reference compare with this).
 void sampleLightmap(const LightBake& bake, std::size_t chart, const Vec3& p, float direct[4], float indirect[3]);

@@ -37,20 +37,4 @@ inline map::Level compile(const std::string& text) { return map::compileLevel(ma
 // A Quake point (units, z up) in the level's metres (Y up).
 inline Vec3 metres(double x, double y, double z) { return Vec3{x, z, -y} / 32.0; }
 
-// The chart of the baked face through p with normal n (-1 when none).
-inline long chartAt(const LightBake& bake, const map::Level& level, const Vec3& p, const Vec3& n) {
-    for (std::size_t c = 0; c < bake.atlas.charts.size(); ++c) {
-        const Chart& ch = bake.atlas.charts[c];
-        if (dot(ch.normal, n) < 0.999 || std::abs(dot(ch.normal, p) - ch.planeD) > 1e-6) continue;
-        const auto& face = level.brushes[ch.ref.brush].faces[ch.ref.face];
-        bool inside = true;
-        for (std::size_t k = 0; k < face.vertices.size() && inside; ++k) {
-            const Vec3 a = face.vertices[k].position, b = face.vertices[(k + 1) % face.vertices.size()].position;
-            inside = dot(cross(b - a, p - a), ch.normal) >= -1e-9;
-        }
-        if (inside) return static_cast<long>(c);
-    }
-    return -1;
-}
-
 }  // namespace obscura::lightbake::testdata
