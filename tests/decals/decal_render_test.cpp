@@ -57,7 +57,10 @@ Counts run(const fs::path& dir, int cap) {
         for (int x = 0; x < 640; ++x) {
             const std::size_t i = (static_cast<std::size_t>(y) * 640 + x) * 4;
             const int d = (after.rgba[i] + after.rgba[i + 1] + after.rgba[i + 2]) - (before.rgba[i] + before.rgba[i + 1] + before.rgba[i + 2]);
-            if (d < -3 * 40) {
+            // Darker by 12 levels a channel and to under 0.6 of what was there: this floor lies in the
+            // baked shade (about 26 of 255, engine_ext/lightbake), where a hole cannot take 40 levels.
+            const int was = before.rgba[i] + before.rgba[i + 1] + before.rgba[i + 2];
+            if (d < -3 * 12 && 10 * (was + d) < 6 * was) {
                 ++c.darker;
                 if (std::abs(x - 320) < 40 && std::abs(y - 180) < 40) ++c.darkerNearCentre;
             }
