@@ -67,6 +67,15 @@ struct Tracer {
     static double u(Rng& rng) { return (rng.nextU32() >> 8) * (1.0 / 16777216.0); }
 };
 
+Irradiance blank(int width, int height) {
+    Irradiance out;
+    out.width = width;
+    out.height = height;
+    out.rgb.assign(static_cast<std::size_t>(width) * height * 3, 0.0f);
+    out.surface.assign(static_cast<std::size_t>(width) * height, 0);
+    return out;
+}
+
 template <class F> void eachRow(int height, int threads, const F& f) {
     const int n = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
@@ -80,11 +89,7 @@ template <class F> void eachRow(int height, int threads, const F& f) {
 
 Irradiance pathTraced(const map::Level& level, const CameraPose& pose, int width, int height, const ReferenceSettings& s) {
     const Tracer tracer(level);
-    Irradiance out;
-    out.width = width;
-    out.height = height;
-    out.rgb.assign(static_cast<std::size_t>(width) * height * 3, 0.0f);
-    out.surface.assign(static_cast<std::size_t>(width) * height, 0);
+    Irradiance out = blank(width, height);
     eachRow(height, s.threads, [&](int y) {
         std::uint64_t rays = 0;
         for (int x = 0; x < width; ++x) {
@@ -111,11 +116,7 @@ Irradiance pathTraced(const map::Level& level, const CameraPose& pose, int width
 Irradiance beforeTheBake(const map::Level& level, const CameraPose& pose, int width, int height) {
     const Tracer tracer(level);
     const render::LevelLightingParams old = render::computeLevelLighting(level);
-    Irradiance out;
-    out.width = width;
-    out.height = height;
-    out.rgb.assign(static_cast<std::size_t>(width) * height * 3, 0.0f);
-    out.surface.assign(static_cast<std::size_t>(width) * height, 0);
+    Irradiance out = blank(width, height);
     eachRow(height, 0, [&](int y) {
         std::uint64_t rays = 0;
         for (int x = 0; x < width; ++x) {
