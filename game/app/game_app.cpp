@@ -11,6 +11,7 @@
 #include "app/x_errors.h"
 #include "render/hud.h"
 #include "render/level_lighting.h"
+#include "render/pass_order.h"
 #include "replay/replay_recorder.h"
 #include "replay/replay_script.h"
 #include "session.h"
@@ -87,6 +88,7 @@ void GameApp::createRoot() {
     auto* logs = new Ogre::LogManager();
     logs->createLog(logFile, true, false, false);
     mRoot = OGRE_NEW Ogre::Root("", "", "");
+    render::installNamedPassOrder();  // before any material: the draw order by names, not addresses
     mRoot->loadPlugin(OBSCURA_OGRE_PLUGIN_DIR "/RenderSystem_GL3Plus");
     mRoot->loadPlugin(OBSCURA_OGRE_PLUGIN_DIR "/Codec_STBI");  // PNG load/save
     mOverlaySystem = OGRE_NEW Ogre::OverlaySystem();
