@@ -19,6 +19,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace obscura::lightbake {
 
 namespace {
@@ -73,6 +75,13 @@ private:
     const std::string& data_;
     std::size_t at_ = 0;
 };
+
+// The bake as the cache stores it: a fresh bake is rounded to half floats too, so the first run of a
+// level (baked) and every later one (read back) see the same light, on the GPU and in the CPU's
+// lookups alike.
+void roundToHalves(std::vector<float>& v) {
+    for (float& x : v) x = fromHalf(toHalf(x));
+}
 
 std::uint64_t checksum(const char* p, std::size_t n) {
     StateHasher h;
@@ -209,7 +218,9 @@ void saveBake(const std::string& file, std::uint64_t key, const LightBake& bake)
 
     std::error_code ec;
     fs::create_directories(fs::path(file).parent_path(), ec);
-    const std::string temp = file + ".part";
+    // A temporary of this process's own: two games loading one level at once (a test suite run
+    // in parallel) each write theirs, and the last rename wins with a whole file.
+    const std::string temp = file + "." + std::to_string(::getpid()) + ".part";
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         out.write(w.data.data(), static_cast<std::streamsize>(w.data.size()));
@@ -235,6 +246,7 @@ BakeOutcome bakeOrLoad(const map::Level& level, const BakeSky& sky, const BakeSe
     }
     if (!why.empty() && log) log("lightbake: " + out.file + ": " + why + "; baking again");
     out.bake = bakeLevel(level, sky, settings, log);
+    for (auto* v : {&out.bake.direct, &out.bake.indirect, &out.bake.probes.up, &out.bake.probes.down}) roundToHalves(*v);
     try {
         saveBake(out.file, key, out.bake);
     } catch (const std::exception& e) {
