@@ -7,13 +7,17 @@
 // followed the heap. Where two brushes meet, the face one brush hides under the other ties in depth
 // with the visible one, and the pass drawn first wins the pixel: a run that baked the light (its
 // worker threads leave the heap in another state) drew a different pixel from a run that read the
-// bake from the cache (replay_pool_swim's `above`, 1 pixel by 71 levels, in CI and 1 run in 10 here).
+// bake from the cache (replay_pool_swim's `above`, 1 pixel by 71 levels, in CI, and in 1 of 2
+// runs that baked under load here).
 //
 // The key: the pass's index in its technique in the top 4 bits (as OGRE's own: a material's first
-// passes draw before its later ones) and 28 bits of FNV-1a over "material/scheme/technique", so the
-// order is the same in every run and passes of one material stay together. Two names colliding in
+// passes draw before its later ones) and 28 bits of the project's FNV-1a (core/state_hash.h) over
+// the material's, scheme's and technique's names, so the order is the same in every run and the
+// passes of one material stay together. Two names colliding in
 // 28 bits (about 1 in 50,000 for a level's hundred materials) fall back to OGRE's address order.
 #pragma once
+
+#include "core/state_hash.h"
 
 #include <cstdint>
 #include <string_view>
@@ -22,21 +26,14 @@ namespace obscura::render {
 
 inline std::uint32_t passOrderKey(std::string_view material, std::string_view scheme, std::string_view technique,
                                   unsigned passIndex) {
-    std::uint32_t h = 2166136261u;  // FNV-1a 32-bit offset basis
-    auto add = [&h](std::string_view s) {
-        for (unsigned char c : s) {
-            h ^= c;
-            h *= 16777619u;  // FNV-1a 32-bit prime
-        }
-        h ^= 0xffu;  // a separator no name byte equals: "a/bc" and "ab/c" differ
-        h *= 16777619u;
-    };
-    add(material);
-    add(scheme);
-    add(technique);
+    StateHasher h;  // each name with its length: "ab"+"c" and "a"+"bc" differ
+    h.add(material);
+    h.add(scheme);
+    h.add(technique);
     constexpr unsigned kIndexBits = 4;  // OGRE's own hash keeps the pass index in its top 4 bits
     constexpr std::uint32_t kNameMask = (1u << (32 - kIndexBits)) - 1;
-    return (static_cast<std::uint32_t>(passIndex & ((1u << kIndexBits) - 1)) << (32 - kIndexBits)) | (h & kNameMask);
+    const auto index = static_cast<std::uint32_t>(passIndex & ((1u << kIndexBits) - 1));
+    return (index << (32 - kIndexBits)) | (static_cast<std::uint32_t>(h.value()) & kNameMask);
 }
 
 }  // namespace obscura::render

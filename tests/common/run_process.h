@@ -3,9 +3,10 @@
 
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
+#include <thread>
 
 namespace obscura::testing_support {
 
@@ -32,7 +33,7 @@ inline ProcessResult runProcess(const std::string& command) {
     ProcessResult r = runOnce(command);
     for (int retry = 0; retry < 2 && r.code != 0 && r.out.find("cannot open an X display") != std::string::npos; ++retry) {
         std::fprintf(stderr, "runProcess: the X server refused the game; starting it again\n");
-        std::system("sleep 1");
+        std::this_thread::sleep_for(std::chrono::seconds(1));
         r = runOnce(command);
     }
     return r;
