@@ -2,8 +2,9 @@
 #include "cache_dir.h"
 #include "session.h"
 
+#include "map/asset_path.h"
+#include "map/entity_values.h"
 #include "map/map_compile.h"
-#include "mesh/model_path.h"
 #include "mesh/ogre_mesh_reader.h"
 
 #include <algorithm>
@@ -39,10 +40,9 @@ sim::SimConfig simConfig(const Settings& settings) {
 // misc_model meshes as static colliders and smoke obstacles, read without the renderer.
 std::vector<TriangleMesh> modelColliders(const map::Level& level, const Settings& settings) {
     std::vector<TriangleMesh> meshes;
-    const auto dirs = Session::modelSearchDirs(settings);
+    const map::LevelFiles files(settings.level, Session::modelSearchDirs(settings));
     for (const auto& m : level.models) {
-        const std::string file = mesh::findModelFile(m.mesh, dirs);
-        if (file.empty()) throw std::runtime_error(settings.level + ": misc_model mesh '" + m.mesh + "' not found");
+        const std::string file = files.require(m.mesh, settings.level + ":" + std::to_string(m.pos.line) + ": misc_model", "'model'");
         meshes.push_back(mesh::meshTriangles(mesh::readOgreMesh(file), {m.origin, m.yaw, m.scale}));
     }
     return meshes;
@@ -63,14 +63,15 @@ map::Level Session::loadLevel(const Settings& settings, std::vector<std::string>
     map::MapFile file = map::loadMapFile(settings.level);
     // Obscura's own entities for the level, `<name>.ent` beside it or in media/levels/ (a real
     // Quake map, which nobody here may edit, gets its signs there: media/levels/e3m4.ent).
+    // Confined like every file a level names: an overlay that links out of the roots is refused.
     const std::filesystem::path levelPath(settings.level);
-    for (const auto& dir : {levelPath.parent_path(), std::filesystem::path(settings.dataDir) / "media/levels"}) {
-        const std::filesystem::path overlay = dir / (levelPath.stem().string() + ".ent");
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(overlay, ec)) continue;
-        map::addEntityOverlay(file, overlay.string());
-        break;
-    }
+    const map::LevelFiles files(settings.level, modelSearchDirs(settings));
+    const std::vector<std::string> overlayDirs = {levelPath.parent_path().string(),
+                                                  (std::filesystem::path(settings.dataDir) / "media/levels").string()};
+    const std::string overlayName = levelPath.stem().string() + ".ent";
+    const map::AssetPath overlay = map::resolveAsset(overlayName, overlayDirs, files.roots());
+    if (!overlay.error.empty()) throw std::runtime_error(settings.level + ": entity overlay '" + overlayName + "' " + overlay.error);
+    if (!overlay.file.empty()) map::addEntityOverlay(file, overlay.file);
     const auto t1 = std::chrono::steady_clock::now();
     map::Level level = map::compileLevel(file, options, warnings);
     if (times) {

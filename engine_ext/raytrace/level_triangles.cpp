@@ -1,7 +1,7 @@
 // See level_triangles.h.
 #include "raytrace/level_triangles.h"
 
-#include "mesh/model_path.h"
+#include "map/asset_path.h"
 #include "mesh/ogre_mesh_reader.h"
 
 #include <iostream>
@@ -25,9 +25,9 @@ std::vector<TriangleMesh> levelTriangles(const map::Level& level) {
 // mesh::Transform is render::modelTransform, bit for bit.
 void addModelTriangles(const map::Level& level, const std::vector<std::string>& searchDirs,
                        std::vector<TriangleMesh>& out, const std::string& logPrefix) {
+    const map::LevelFiles files(level.sourcePath, searchDirs);
     for (const auto& m : level.models) {
-        const std::string file = mesh::findModelFile(m.mesh, searchDirs);
-        if (file.empty()) throw std::runtime_error(level.sourcePath + ": misc_model mesh '" + m.mesh + "' not found");
+        const std::string file = files.require(m.mesh, level.sourcePath + ":" + std::to_string(m.pos.line) + ": misc_model", "'model'");
         const mesh::MeshFile meshFile = mesh::readOgreMesh(file);
         out.push_back(mesh::meshTriangles(meshFile, {m.origin, m.yaw, m.scale}));
         if (logPrefix.empty()) continue;

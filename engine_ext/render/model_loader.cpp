@@ -64,10 +64,6 @@ void appendTriangles(const Ogre::VertexData* vd, const Ogre::IndexData* id, cons
 }
 }  // namespace
 
-std::vector<std::string> modelRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs) {
-    return map::levelAssetRoots(levelPath, searchDirs);
-}
-
 TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,
                         const std::vector<std::string>& searchDirs, const std::string& group, LevelMaterials& materials) {
     auto& rgm = Ogre::ResourceGroupManager::getSingleton();
@@ -76,8 +72,8 @@ TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model,
     // A path is resolved (symlinks, `..`) and must stay inside the level's folder or a media
     // folder before its folder becomes a resource location; a bare name may also come from the
     // resource group (our own media locations).
-    const map::AssetPath found = map::resolveAsset(model.mesh, searchDirs, modelRoots(levelPath, searchDirs));
-    if (!found.error.empty()) throw std::runtime_error(where + " 'model' " + shown + " " + found.error + "; models must live there");
+    const map::AssetPath found = map::LevelFiles(levelPath, searchDirs).find(model.mesh);
+    if (!found.error.empty()) throw std::runtime_error(where + " 'model' " + shown + " " + found.error + "; a level's files must live there");
     std::string meshName;
     if (!found.file.empty()) {
         const std::string dir = fs::path(found.file).parent_path().string();

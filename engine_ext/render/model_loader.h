@@ -20,20 +20,15 @@ namespace obscura::render {
 
 class LevelMaterials;
 
-// A relative `model` path is looked for in each of `searchDirs` in turn (the game passes the .map
-// file's folder, the data folder and the working directory), an absolute one as is; the file found
-// must resolve (symlinks and `..` first) inside the level's folder, or `media/` or `../shared` of a
-// search folder (modelRoots), else it is an error naming the level, the entity's line and where the
-// path led, and its folder never becomes a resource location. A bare name that is no file is
-// looked up in the resource group. `levelPath` names the level in errors.
 // The model's world transform: translate(origin) * rotateY(yaw) * scale.
 Ogre::Affine3 modelTransform(const map::LevelModel& model);
 // Every submesh's triangles, transformed (shared by the game's colliders and tools/aoref).
 TriangleMesh meshTriangles(const Ogre::Mesh& mesh, const Ogre::Affine3& transform);
 
-// The folders a level's models may come from (see above).
-std::vector<std::string> modelRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs);
-
+// The `model` file is found by map::LevelFiles (the one confined lookup: the level's folder and the
+// media folders, regular files only), else it is an error naming the level, the entity's line and
+// where the path led, and its folder never becomes a resource location. A bare name that is no file
+// is looked up in the resource group. `levelPath` names the level in errors.
 TriangleMesh placeModel(Ogre::SceneManager& scene, const map::LevelModel& model, const std::string& levelPath,
                         const std::vector<std::string>& searchDirs, const std::string& group, LevelMaterials& materials);
 

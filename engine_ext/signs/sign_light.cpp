@@ -3,6 +3,7 @@
 
 #include "decals/glyph.h"
 #include "decals/sdf.h"
+#include "map/asset_path.h"
 #include "map/entity_values.h"
 #include "signs/signs_shared.h"
 
@@ -69,11 +70,10 @@ std::string findFont(const std::string& name, const std::vector<std::string>& fo
     if (name.empty()) throw Skip{"empty 'font'"};
     if (name.find('/') != std::string::npos || name.find('\\') != std::string::npos || name == "." || name == "..")
         throw Skip{"font " + map::quotedValue(name) + " is not a bare file name (fonts are looked up in the font folders)"};
-    std::error_code ec;
-    for (const auto& dir : fontDirs) {
-        const std::filesystem::path p = std::filesystem::path(dir) / name;
-        if (std::filesystem::is_regular_file(p, ec)) return p.string();
-    }
+    // Confined to the font folders themselves: a link beside the level that leads elsewhere is refused.
+    const map::AssetPath found = map::resolveAsset(name, fontDirs, fontDirs, "the font folders");
+    if (!found.error.empty()) throw Skip{"font " + map::quotedValue(name) + " " + found.error};
+    if (!found.file.empty()) return found.file;
     std::string dirs;
     for (const auto& d : fontDirs) dirs += (dirs.empty() ? "" : ", ") + d;
     throw Skip{"font " + map::quotedValue(name) + " not found in " + (dirs.empty() ? std::string("(no font folder)") : dirs)};

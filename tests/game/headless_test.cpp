@@ -81,7 +81,7 @@ TEST(Headless, MissingLevelAndMissingMeshAreClearErrors) {
     std::ofstream(map) << "{\n\"classname\" \"worldspawn\"\n}\n{\n\"classname\" \"misc_model\"\n\"origin\" \"0 0 0\"\n\"model\" \"nothere.mesh\"\n}\n";
     r = game("--headless --ticks 1 --level " + map);
     EXPECT_EQ(r.code, 1);
-    EXPECT_NE(r.out.find("misc_model mesh 'nothere.mesh' not found"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("misc_model 'model' 'nothere.mesh' not found"), std::string::npos) << r.out;
 }
 
 TEST(Headless, UnknownOptionAndBadConfigExitWithUsageErrors) {

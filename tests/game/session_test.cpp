@@ -50,7 +50,7 @@ TEST(Session, AMissingModelIsALoadError) {
         load(settingsFor(map));
         FAIL() << "no error";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("misc_model mesh 'nothere.mesh' not found"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("misc_model 'model' 'nothere.mesh' not found"), std::string::npos) << e.what();
     }
 }
 

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 using namespace obscura::map;
 namespace fs = std::filesystem;
@@ -69,9 +70,30 @@ TEST(AssetPath, NamesThatAreNoFileGiveNeither) {
     const AssetPath a = resolveAsset("nothere.mesh", t.dirs(), t.roots());
     EXPECT_TRUE(a.file.empty());
     EXPECT_TRUE(a.error.empty());
-    EXPECT_TRUE(resolveAsset("models", t.dirs(), t.roots()).file.empty());  // a folder is no mesh
+    const AssetPath folder = resolveAsset("models", t.dirs(), t.roots());  // a folder is no mesh
+    EXPECT_TRUE(folder.file.empty());
+    EXPECT_EQ(folder.error, "resolves to '" + fs::canonical(t.level / "models").string() + "', which is a folder");
     EXPECT_TRUE(isBareName("cornell.mesh"));
     EXPECT_FALSE(isBareName("../cornell.mesh"));
     EXPECT_FALSE(isBareName("a\\b.mesh"));
     EXPECT_FALSE(isBareName(".."));
+}
+
+TEST(AssetPath, SearchFoldersAreTriedInOrder) {
+    const Tree t;
+    std::ofstream((t.media / "crate.mesh").string()) << "m";
+    std::ofstream((t.media / "only_media.mesh").string()) << "m";
+    const std::vector<std::string> dirs = {(t.level / "models").string(), t.media.string()};
+    EXPECT_EQ(resolveAsset("crate.mesh", dirs, t.roots()).file, fs::canonical(t.level / "models/crate.mesh").string());  // the first wins
+    EXPECT_EQ(resolveAsset("only_media.mesh", dirs, t.roots()).file, fs::canonical(t.media / "only_media.mesh").string());
+    EXPECT_EQ(levelSearchDirs("/x/levels/a.map", "/data"), (std::vector<std::string>{"/x/levels", "/data", fs::current_path().string()}));
+    const LevelFiles files((t.level / "a.map").string(), {t.level.string()});
+    EXPECT_EQ(files.require("models/crate.mesh", "a.map:3: misc_model", "'model'"), fs::canonical(t.level / "models/crate.mesh").string());
+    try {
+        files.require("nothere.mesh", "a.map:3: misc_model", "'model'");
+        FAIL() << "no error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "a.map:3: misc_model 'model' 'nothere.mesh' not found (looked in the level's folder, the data folder and the working directory)");
+    }
 }

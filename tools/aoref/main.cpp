@@ -16,6 +16,7 @@
 // pixels that see geometry, and over those whose reference is below 0.95.
 #include "aoref/ao_compare.h"
 #include "core/image.h"
+#include "map/asset_path.h"
 #include "map/map_compile.h"
 #include "raytrace/level_triangles.h"
 #include "ssao/ao_reference.h"
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
 
         const map::Level level = map::loadLevel(levelPath);
         auto triangles = levelTriangles(level);
-        addModelTriangles(level, {std::filesystem::path(levelPath).parent_path().string(), OBSCURA_DATA_DIR, "."}, triangles, "aoref");
+        addModelTriangles(level, map::levelSearchDirs(levelPath, OBSCURA_DATA_DIR), triangles, "aoref");
         const ssao::AoReference ref(triangles);
         const auto t0 = std::chrono::steady_clock::now();
         const ssao::AoImage fine = ref.render(pose, width * scale, height * scale, radius, rays / (scale * scale), 2);

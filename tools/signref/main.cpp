@@ -17,6 +17,7 @@
 //              segment, in pixels (and metres when the level and pose let it map the ends)
 #include "core/image.h"
 #include "core/pfm.h"
+#include "map/asset_path.h"
 #include "map/map_compile.h"
 #include "raytrace/level_triangles.h"
 #include "signref/shaft_reference.h"
@@ -55,7 +56,7 @@ Scene loadScene(const std::string& levelPath) {
     Scene s;
     s.level = map::loadLevel(levelPath);
     auto triangles = levelTriangles(s.level);
-    addModelTriangles(s.level, {std::filesystem::path(levelPath).parent_path().string(), OBSCURA_DATA_DIR, "."}, triangles);
+    addModelTriangles(s.level, map::levelSearchDirs(levelPath, OBSCURA_DATA_DIR), triangles);
     s.rays = std::make_unique<RayScene>(triangles);
     return s;
 }
