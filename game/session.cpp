@@ -59,6 +59,7 @@ Vec3 parseVec3(const std::string& text) {
 map::Level Session::loadLevel(const Settings& settings, std::vector<std::string>* warnings, map::LoadTimes* times) {
     map::CompileOptions options;
     options.unitsPerMetre = settings.mapScale;
+    options.skill = settings.skill;
     const auto t0 = std::chrono::steady_clock::now();
     map::MapFile file = map::loadMapFile(settings.level);
     // Obscura's own entities for the level, `<name>.ent` beside it or in media/levels/ (a real
@@ -82,8 +83,7 @@ map::Level Session::loadLevel(const Settings& settings, std::vector<std::string>
 }
 
 std::vector<std::string> Session::modelSearchDirs(const Settings& settings) {
-    return {std::filesystem::path(settings.level).parent_path().string(), settings.dataDir,
-            std::filesystem::current_path().string()};
+    return map::levelSearchDirs(settings.level, settings.dataDir);
 }
 
 namespace {

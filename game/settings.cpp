@@ -166,7 +166,7 @@ struct Option {
 };
 
 // Settings that only make sense before the game starts; a replay's `set` may not change them.
-const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "seed", "tick-rate", "width", "height", "fullscreen",
+const char* const kStartupOnly[] = {"start-pose", "level", "map-scale", "skill", "seed", "tick-rate", "width", "height", "fullscreen",
                                     "vsync", "headless", "ticks", "screenshot", "volume-dump", "light-dump", "irradiance-dump", "smoke-dump", "replay", "replay-draw", "capture-dir", "record",
                                     "timedemo", "config", "data-dir", "log", "debug-max-render-targets",
                                     "debug-unsupported-formats", "smoke-resolution", "truth-threads"};
@@ -231,6 +231,8 @@ SettingsParser::SettingsParser() : impl_(new Impl) {
                if (d != 0 && !(d >= 1 && d <= 1024)) fail(where, "map-scale", q(v) + " is out of range, expected 0 (from the map) or 1 to 1024");
                s.mapScale = d;
            }});
+    I.add({"skill", "Quake's skill: 0 easy, 1 normal, 2 hard, 3 nightmare (entities whose spawnflags exclude it are not spawned)",
+           integer(&S::skill, "skill", map::kMinSkill, map::kMaxSkill)});
     I.add({"seed", "simulation RNG seed", [](S& s, W v, W where) {
                char* end = nullptr;
                errno = 0;

@@ -5,6 +5,7 @@
 
 #include "frame/frame_knobs.h"
 #include "map/level.h"
+#include "map/spawnflags.h"
 #include "ssao/ssao_knobs.h"
 #include "signs/sign_knobs.h"
 
@@ -36,6 +37,7 @@ struct Settings {
     // Level and simulation
     std::string level;           // .map path; empty = the default level
     double mapScale = 0;         // map units per metre; 0 = from the map (worldspawn) or 32
+    int skill = map::kDefaultSkill;  // Quake's skill 0..3: entities flagged out of it are not spawned (map/spawnflags.h)
     std::uint64_t seed = 1;
     double tickRate = 60;
     // Display

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "map/spawnflags.h"
 
 namespace obscura::map {
 
@@ -181,6 +182,8 @@ struct Level {
     // Classes not in entity_classes.h, each listed once in file order, with how many entities had it.
     std::vector<std::string> unknownClassnames;
     std::vector<int> unknownClassCounts;  // parallel to unknownClassnames
+    int skill = kDefaultSkill;  // the skill it was compiled for (spawnflags.h)
+    int leftOutEntities = 0;    // entities (with their brushes) whose spawnflags exclude that skill
 };
 
 }  // namespace obscura::map

@@ -19,7 +19,8 @@ std::string summaryLine(const Level& level, std::size_t warningCount, const Load
     std::snprintf(buf, sizeof buf, "parse %.1f ms, compile %.1f ms, session %.1f ms, scene %.1f ms; ", times.parseMs, times.compileMs,
                   times.sessionMs, times.sceneMs);
     std::string s = "obscura: loaded " + level.sourcePath + ": " + buf;
-    s += std::to_string(level.brushes.size()) + " brushes, " + std::to_string(level.entities.size()) + " entities, " +
+    s += std::to_string(level.brushes.size()) + " brushes, " + std::to_string(level.entities.size()) + " entities" +
+         (level.leftOutEntities ? " (" + std::to_string(level.leftOutEntities) + " more left out at skill " + std::to_string(level.skill) + ")" : "") + ", " +
          std::to_string(level.lights.size()) + " lights, " + std::to_string(level.models.size()) + " models; " +
          std::to_string(warningCount) + (warningCount == 1 ? " warning" : " warnings") + "; unknown classes: ";
 

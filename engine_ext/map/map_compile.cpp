@@ -110,11 +110,7 @@ int startPriority(const std::string& classname, const MapEntity& e) {
 }
 }  // namespace
 
-bool isInvisibleTexture(const std::string& texture) {
-    const std::string t = lower(texture);
-    return t.find("clip") != std::string::npos || t == "trigger" || t == "skip" || t == "hint" || t == "hintskip" ||
-           t == "nodraw" || t == "caulk" || startsWith(t, "common/") || startsWith(t, "tools/");
-}
+bool isInvisibleTexture(const std::string& texture) { return toolSurface(texture) != ToolSurface::None; }
 
 bool isLiquidTexture(const std::string& texture) { return !texture.empty() && texture[0] == '*'; }
 
@@ -150,6 +146,16 @@ public:
         warnAt(e.pos, "'" + key + "' value '" + s + "' is not a number; using " + std::to_string(fallback));
         return fallback;
     }
+    // `spawnflags` as Quake's progs test it (a float's integer part); a bad value is warned about
+    // where the entity is spawned (game/sim/entity_keys.h), here it keeps the entity.
+    static int spawnflags(const MapEntity& e) {
+        const std::string& s = e.value("spawnflags");
+        const char* p = s.data();
+        while (p < s.data() + s.size() && (*p == ' ' || *p == '\t')) ++p;
+        double v = 0;
+        const auto r = std::from_chars(p, s.data() + s.size(), v);
+        return r.ec == std::errc() && v >= 0 && v < 2147483648.0 ? static_cast<int>(v) : 0;
+    }
     bool vec(const MapEntity& e, const std::string& key, Vec3& out) const {
         const std::string& s = e.value(key);
         if (s.empty()) return false;
@@ -160,6 +166,10 @@ public:
 
     void compile(std::size_t index) {
         const MapEntity& me = map_.entities[index];
+        if (index > 0 && leftOutAtSkill(spawnflags(me), options_.skill)) {  // never worldspawn, as Quake
+            ++level_.leftOutEntities;
+            return;
+        }
         LevelEntity e;
         e.keys = me.keys;
         e.pos = me.pos;
@@ -190,9 +200,10 @@ public:
             level_.playerStart = toWorld(quakeOrigin - Vec3{0, 0, kPlayerOriginAboveFeet}) * inv_;
             level_.playerStartYaw = e.yaw;
         }
-        if (known && known->role == EntityRole::Model) addModel(me, e, static_cast<int>(index));
+        const int levelIndex = static_cast<int>(level_.entities.size());  // entities left out leave no gap
+        if (known && known->role == EntityRole::Model) addModel(me, e, levelIndex);
         current_ = e;  // its keys, for the liquid alpha of its brushes (pushed after them)
-        for (const MapBrush& mb : me.brushes) addBrush(mb, brushRole(known, c), static_cast<int>(index), isMoverClass(c));
+        for (const MapBrush& mb : me.brushes) addBrush(mb, brushRole(known, c), levelIndex, isMoverClass(c));
         level_.entities.push_back(std::move(e));
     }
 
@@ -244,12 +255,27 @@ private:
         return size;
     }
 
+    // ericw-tools' qbsp: a brush of hint faces (the rest skip) is a vis splitter, an origin brush
+    // marks a rotator's centre, and a monster clip blocks monsters (Obscura has none): none of them
+    // is drawn or collides. (Clip and all-skip brushes stay: solid, not drawn.)
+    static bool isToolBrush(const MapBrush& mb) {
+        bool hint = false, onlyHintOrSkip = true;
+        for (const MapFace& f : mb.faces) {
+            const ToolSurface t = toolSurface(f.texture, f.hasFlags, f.contents, f.surfaceFlags);
+            if (t == ToolSurface::Origin || t == ToolSurface::MonsterClip) return true;
+            hint = hint || t == ToolSurface::Hint;
+            onlyHintOrSkip = onlyHintOrSkip && (t == ToolSurface::Hint || t == ToolSurface::Skip);
+        }
+        return hint && onlyHintOrSkip;
+    }
+
     void addBrush(const MapBrush& mb, BrushRole role, int entityIndex, bool mover) {
         BrushResult br = buildBrush(mb);
         if (!br.error.empty()) {
             warnAt(mb.pos, "brush skipped: " + br.error);
             return;
         }
+        if (isToolBrush(mb)) return;  // hint, origin and monster-clip brushes: no geometry for this game
         LevelBrush b;
         b.entityIndex = entityIndex;
         b.pos = mb.pos;
@@ -262,7 +288,8 @@ private:
             LevelPolygon poly;
             poly.texture = face.texture;
             poly.normal = toWorld(bp.normal);
-            poly.visible = role != BrushRole::Volume && !isInvisibleTexture(face.texture) && !isLiquidSkipTexture(face.texture);
+            poly.visible = role != BrushRole::Volume && toolSurface(face.texture, face.hasFlags, face.contents, face.surfaceFlags) == ToolSurface::None &&
+                           !isLiquidSkipTexture(face.texture);
             poly.contents = face.contents;
             poly.surfaceFlags = face.surfaceFlags;
             poly.surfaceValue = face.value;
@@ -329,6 +356,10 @@ private:
 Level compileLevel(const MapFile& map, const CompileOptions& options, std::vector<std::string>* warnings) {
     Level level;
     level.sourcePath = map.path;
+    if (options.skill < kMinSkill || options.skill > kMaxSkill)
+        throw MapError(map.path + ": skill " + std::to_string(options.skill) + " is out of range, expected " + std::to_string(kMinSkill) +
+                       " to " + std::to_string(kMaxSkill));
+    level.skill = options.skill;
     if (warnings) warnings->insert(warnings->end(), map.warnings.begin(), map.warnings.end());
 
     double scale = options.unitsPerMetre;

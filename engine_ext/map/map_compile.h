@@ -4,6 +4,7 @@
 
 #include "map/level.h"
 #include "map/map_parser.h"
+#include "map/spawnflags.h"
 
 #include <cstddef>
 #include <functional>
@@ -26,6 +27,7 @@ constexpr double kMaxLightValue = 1e6;
 constexpr double kPlacementMargin = 100;
 
 struct CompileOptions {
+    int skill = kDefaultSkill;  // kMinSkill..kMaxSkill (spawnflags.h): entities whose spawnflags exclude it are not compiled
     double unitsPerMetre = 0;  // 0: worldspawn "units_per_metre", else 32 (Quake's player is 56 units ~ 1.75 m); else 1..1024
     // Texture size in texels, to turn texel coordinates into repeats; 64x64 when unset (the most
     // common Quake texture size: the generated textures are drawn for that scale).
@@ -48,7 +50,7 @@ void addEntityOverlay(MapFile& map, const std::string& overlayPath);
 Level loadLevel(const std::string& path, const CompileOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 
 // Texture classes (case-insensitive), exposed for tests and other systems.
-bool isInvisibleTexture(const std::string& texture);  // clip, trigger, skip, hint, nodraw, caulk, common/*
+bool isInvisibleTexture(const std::string& texture);  // a tool texture by name (surface_rules.h's toolSurface)
 bool isLiquidTexture(const std::string& texture);     // *water, *lava, *slime, *tele...
 // Moving brush entities: func_door, func_door_secret, func_plat, func_button, func_train.
 bool isMoverClass(const std::string& classname);

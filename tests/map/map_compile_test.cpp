@@ -182,7 +182,15 @@ TEST(MapCompile, LibreQuakeE3m4LoadsWhole) {
     EXPECT_EQ(m.entities.size(), 1301u);
     EXPECT_EQ(brushes, 3441u);
     EXPECT_EQ(m.entities.size() + brushes, 4742u);
-    EXPECT_EQ(l.brushes.size() + skipped, brushes);  // every brush compiled or reported
+    // Every brush compiled, reported, or left out with its entity: at skill 1, 20 entities
+    // (monsters, armour, a func_wall's 1 brush) carry NOT_MEDIUM; e3m4 has no hint or origin brush.
+    std::size_t leftOutBrushes = 0;
+    for (std::size_t i = 1; i < m.entities.size(); ++i)
+        if (leftOutAtSkill(std::atoi(m.entities[i].value("spawnflags").c_str()), kDefaultSkill)) leftOutBrushes += m.entities[i].brushes.size();
+    EXPECT_EQ(l.leftOutEntities, 20);
+    EXPECT_EQ(l.entities.size(), m.entities.size() - 20);
+    EXPECT_EQ(leftOutBrushes, 1u);
+    EXPECT_EQ(l.brushes.size() + skipped + leftOutBrushes, brushes);
     EXPECT_LT(skipped, brushes / 100);               // a real, editor-checked map: almost all compile
     EXPECT_TRUE(l.hasPlayerStart);
     EXPECT_GT(l.lights.size(), 100u);
