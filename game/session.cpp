@@ -117,6 +117,12 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
 }
 
+void Session::showMessage(const std::string& value) {
+    if (value.empty()) return;
+    centreMessage_ = map::messageText(value);
+    centreTicks_ = durations_.centrePrintTicks;
+}
+
 void Session::step(const sim::PlayerCommand& cmd) {
     previousPlayer_ = sim_.player();
     for (std::size_t i = 0; i < previousMoverOffsets_.size(); ++i) previousMoverOffsets_[i] = sim_.movers().offset(i);
@@ -129,8 +135,11 @@ void Session::step(const sim::PlayerCommand& cmd) {
     decals_.onTick(events, sim_);
     signs_.onTick(events);
     hitMarker_ = std::max(0.0, hitMarker_ - durations_.hitMarkerFadePerTick);
-    for (const auto& e : events)
+    if (centreTicks_ > 0) --centreTicks_;
+    for (const auto& e : events) {
         if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;
+        if (e.type == sim::SimEventType::Message) showMessage(level_.entities.at(static_cast<std::size_t>(e.id)).value("message"));
+    }
 }
 
 }  // namespace obscura

@@ -58,8 +58,14 @@ public:
     // The movers' offsets before the last tick (sim().movers() order), for the same interpolation.
     const std::vector<Vec3>& previousMoverOffsets() const { return previousMoverOffsets_; }
     double hitMarker() const { return hitMarker_; }
+    // The `message` Quake would centre-print now (an entity's that used its targets), lines split
+    // at '\n'; empty when none shows. (The level's title, worldspawn's message, goes to the load
+    // line and the window's title, as Quake prints it to the console: not into every capture.)
+    const std::string& centreMessage() const { return centreTicks_ > 0 ? centreMessage_ : kNoMessage; }
 
 private:
+    void showMessage(const std::string& value);
+
     map::Level level_;
     TickDurations durations_;
     std::vector<TriangleMesh> colliders_;  // the misc_models' triangles, world space
@@ -71,6 +77,9 @@ private:
     sim::PlayerState previousPlayer_;
     std::vector<Vec3> previousMoverOffsets_;
     double hitMarker_ = 0;  // 1 at a hit, fading over kHitMarkerFadeSeconds
+    std::string centreMessage_;
+    int centreTicks_ = 0;   // ticks it still shows (durations_.centrePrintTicks after it is set)
+    static inline const std::string kNoMessage;
 };
 
 // "x y z" (validated by the settings table already).

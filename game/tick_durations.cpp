@@ -17,6 +17,7 @@ TickDurations::TickDurations(double tickRate)
       muzzleFlashTicks(ticksFor(kMuzzleFlashSeconds, tickRate)),
       smokeStepTicks(ticksFor(kSmokeStepSeconds, tickRate)),
       hissFadeTicks(ticksFor(kHissFadeSeconds, tickRate)),
+      centrePrintTicks(ticksFor(kCentrePrintSeconds, tickRate)),
       // (1 / rate) / 0.25 is exactly 1/15 at 60 Hz: dividing by a power of two is exact.
       hitMarkerFadePerTick((1.0 / tickRate) / kHitMarkerFadeSeconds) {}
 

@@ -14,6 +14,8 @@ constexpr double kSparkSeconds = 0.2;
 constexpr double kMuzzleFlashSeconds = 2.0 / 60.0;
 // The HUD's hit marker: 1 at a hit, fading to 0 over a quarter second.
 constexpr double kHitMarkerFadeSeconds = 0.25;
+// A `message` centre-printed on the HUD stays 2 s (Quake's scr_centertime).
+constexpr double kCentrePrintSeconds = 2.0;
 // A grenade's hiss fades over the last half second of its emission.
 constexpr double kHissFadeSeconds = 0.5;
 // The smoke volumes step at 20 Hz: a 64^3 step costs ~6.5 ms on two cores (plus ~2.6 ms for the
@@ -33,6 +35,7 @@ struct TickDurations {
     int muzzleFlashTicks;
     int smokeStepTicks;
     int hissFadeTicks;
+    int centrePrintTicks;
     double hitMarkerFadePerTick;  // of the marker's full strength
 };
 

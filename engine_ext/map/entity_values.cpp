@@ -38,6 +38,19 @@ bool valueNumbers(const std::string& text, std::size_t n, double* out) {
 
 std::string quotedValue(const std::string& s) { return "'" + (s.size() > 64 ? s.substr(0, 64) + "..." : s) + "'"; }
 
+std::string messageText(const std::string& value) {
+    std::string out;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        if (value[i] == '\\' && i + 1 < value.size() && value[i + 1] == 'n') {
+            out += '\n';
+            ++i;
+        } else {
+            out += value[i];
+        }
+    }
+    return out;
+}
+
 Vec3 mapPointToWorld(const Vec3& q, double unitsPerMetre) { return Vec3{q.x, q.z, -q.y} * (1.0 / unitsPerMetre); }
 
 std::string readOrigin(const LevelEntity& e, Vec3& out) {

@@ -20,6 +20,8 @@ std::vector<std::string> valueWords(const std::string& s);
 bool valueNumbers(const std::string& text, std::size_t n, double* out);
 // `s` in single quotes for a message, cut after 64 characters.
 std::string quotedValue(const std::string& s);
+// A `message` as Quake shows it: ED_NewString turns the two characters `\n` into a line break.
+std::string messageText(const std::string& value);
 
 // A Quake point (map units, x east, y north, z up) in the level's world: (x, z, -y) / units per
 // metre, computed as the compiler computes entity origins (so a key holding a point lands exactly

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace obscura::render {
@@ -81,6 +82,7 @@ void Hud::update(const HudState& state) {
     recordFrame(state.frameMs);
     drawFrameGraph();
     drawCombat(state);
+    drawCentreMessage(state.centreMessage);
 
     if (panelVisible_) drawPanel();
     if (menu_) menu_();
@@ -105,6 +107,24 @@ void Hud::drawFrameGraph() {
     }
     const float y60 = origin.y + height - height * 16.7f / top;
     dl->AddLine(ImVec2(origin.x, y60), ImVec2(origin.x + width, y60), IM_COL32(255, 255, 255, 120), 1.0f);
+}
+
+void Hud::drawCentreMessage(const std::string& text) {
+    // Each line centred, the block's top a third down the view (Quake's SCR_DrawCenterString
+    // starts at 35 % of the height), clear of the crosshair.
+    if (text.empty()) return;
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    const ImGuiIO& io = ImGui::GetIO();
+    float y = io.DisplaySize.y * 0.35f;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::string line = text.substr(start, end - start);
+        const float w = ImGui::CalcTextSize(line.c_str()).x;
+        shadowedText(dl, ImVec2(std::floor((io.DisplaySize.x - w) * 0.5f), y), IM_COL32(255, 255, 255, 255), line.c_str());
+        y += ImGui::GetTextLineHeightWithSpacing();
+        start = end + 1;
+    }
 }
 
 void Hud::drawCombat(const HudState& state) {

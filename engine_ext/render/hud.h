@@ -28,6 +28,7 @@ struct HudState {
     int score = 0;
     double hitMarker = 0;        // 1 just after a hit, fading to 0
     double throwCharge = -1;     // 0..1 while the grenade key is held, else < 0
+    std::string centreMessage;   // a level's `message` (lines split at '\n'), centred above the crosshair; empty: none
 };
 
 class Hud {
@@ -53,6 +54,7 @@ public:
 private:
     void drawPanel();
     void drawCombat(const HudState& state);
+    void drawCentreMessage(const std::string& text);
     void drawFrameGraph();
     Ogre::ImGuiOverlay* overlay_ = nullptr;  // owned by OGRE's OverlayManager once added
     bool panelVisible_ = false;

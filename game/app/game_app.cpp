@@ -9,6 +9,7 @@
 #include "app/render_view.h"
 #include "app/sdl_keys.h"
 #include "app/x_errors.h"
+#include "map/entity_values.h"
 #include "render/hud.h"
 #include "render/level_lighting.h"
 #include "render/pass_order.h"
@@ -187,6 +188,13 @@ void GameApp::load() {
     const std::string summary = map::summaryLine(session_->level(), warnings.size() + simWarnings.size(), times);
     Ogre::LogManager::getSingleton().logMessage(summary);
     std::cerr << summary << "\n";
+    // The level's title (worldspawn's `message`), where Quake prints it on load: the console (here
+    // stderr) and, in a window, its title bar.
+    const auto& entities = session_->level().entities;
+    if (const std::string title = entities.empty() ? "" : map::messageText(entities.front().value("message")); !title.empty()) {
+        std::cerr << "obscura: level title: " << title << "\n";
+        if (!settings_.headless) SDL_SetWindowTitle(mWindows.front().native, ("Obscura - " + title).c_str());
+    }
     // Sounds load once, here (a malformed WAV stops the game at load time, naming the file); with
     // no audio device the game runs silent after one warning line.
     audio_ = std::make_unique<GameAudio>(settings_, dataPath("media/sounds"), session_->smoke().settings().emitTime);

@@ -346,6 +346,7 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     hs.reloadProgress = w.reloading ? w.reloadProgress : -1.0;
     hs.score = session.sim().score();
     hs.hitMarker = session.hitMarker();
+    hs.centreMessage = session.centreMessage();
     hs.throwCharge = session.sim().throwCharge() > 0 ? session.sim().throwCharge() : -1.0;
     hud_->update(hs);
 

@@ -76,6 +76,7 @@ void Simulation::step(const PlayerCommand& cmd) {
     for (const SimEvent& e : events_)
         if (e.type == SimEventType::Impact) movers_->shot(e.position, fired);
     triggers_->fire(fired, *movers_);
+    triggers_->takeMessages(events_);
     ++tick_;
 }
 

@@ -135,6 +135,7 @@ void Triggers::useTargets(int entity, Movers& movers) {
 // SUB_UseTargets (after any delay): kill the `killtarget` triggers, use everything named `target`.
 void Triggers::useNow(int entity, Movers& movers, int depth) {
     const map::LevelEntity& e = level_.entities[static_cast<std::size_t>(entity)];
+    if (!e.value("message").empty()) messages_.push_back(entity);
     const std::string& kill = e.value("killtarget");
     if (!kill.empty())
         for (auto& t : triggers_)
@@ -202,6 +203,16 @@ void Triggers::step(PlayerState& player, double radius, PhysicsWorld& physics, M
     pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [](const Pending& p) { return p.ticks <= 0; }), pending_.end());
     for (int e : due) useNow(e, movers, 0);
     fire(fired, movers);
+}
+
+void Triggers::takeMessages(std::vector<SimEvent>& events) {
+    for (int entity : messages_) {
+        SimEvent ev;
+        ev.type = SimEventType::Message;
+        ev.id = entity;
+        events.push_back(ev);
+    }
+    messages_.clear();
 }
 
 void Triggers::hash(StateHasher& h) const {

@@ -35,6 +35,9 @@ public:
     void fire(const std::vector<int>& fired, Movers& movers);
     // Quake's `use` of the triggers named `targetname`.
     void use(const std::string& targetname, std::vector<int>& fired);
+    // A Message event for each entity with a `message` that used its targets since the last call,
+    // in firing order (SUB_UseTargets centre-prints it to the player).
+    void takeMessages(std::vector<SimEvent>& events);
 
     std::size_t count() const { return triggers_.size(); }
     bool removed(std::size_t i) const { return triggers_.at(i).removed; }
@@ -76,6 +79,7 @@ private:
     double tickRate_;
     std::vector<Trigger> triggers_;
     std::vector<Pending> pending_;  // delayed firings, in the order they were made
+    std::vector<int> messages_;     // entities whose message is due (drained every tick)
 };
 
 }  // namespace obscura::sim

@@ -4,10 +4,13 @@
 
 #include "session.h"
 
+#include "../map/test_maps.h"
+
 #include <filesystem>
 #include <fstream>
 
 using namespace obscura;
+using obscura::map::testdata::cube;
 namespace fs = std::filesystem;
 
 namespace {
@@ -66,4 +69,23 @@ TEST(Session, TheSameSettingsGiveTheSameSimulation) {
     }
     EXPECT_EQ(a.sim().stateHash(), b.sim().stateHash());
     EXPECT_EQ(a.tick(), 30u);
+}
+
+TEST(Session, AMessageIsCentrePrintedForTwoSeconds) {
+    // A floor and a trigger_once round the player start whose message has Quake's "\n".
+    const std::string map = (fs::path(testing::TempDir()) / "session_message.map").string();
+    std::ofstream(map) << "{\n\"classname\" \"worldspawn\"\n\"message\" \"A title, not centre-printed\"\n"
+                       << cube(-256, -256, -512, "floor", 512) << "}\n"
+                       << "{\n\"classname\" \"info_player_start\"\n\"origin\" \"0 0 24\"\n}\n"
+                       << "{\n\"classname\" \"trigger_once\"\n\"message\" \"line one\\nline two\"\n" << cube(-64, -64, 0, "trigger", 128)
+                       << "}\n";
+    const Settings s = settingsFor(map);
+    Session session(s, Session::loadLevel(s, nullptr), {0, 1, 0});
+    EXPECT_EQ(session.centreMessage(), "");  // the title goes to the load line, not the HUD
+    session.step({});
+    EXPECT_EQ(session.centreMessage(), "line one\nline two");
+    for (int t = 1; t < 120; ++t) session.step({});
+    EXPECT_EQ(session.centreMessage(), "line one\nline two");  // 2 s at 60 Hz
+    session.step({});
+    EXPECT_EQ(session.centreMessage(), "");
 }
