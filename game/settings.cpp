@@ -526,8 +526,9 @@ void checkOutputsWritable(const Settings& s) {
         if (path.empty()) return;
         std::error_code ec;
         if (fs::is_directory(path, ec)) fail(sourceOf(s, key), key, q(path) + " is a folder, expected a file name");
+        // Its folder is made, as the capture folder is (a new user's `--screenshot shots/a.png`).
         const fs::path parent = fs::path(path).parent_path();
-        const std::string problem = writableFolderProblem(parent, false);
+        const std::string problem = writableFolderProblem(parent, true);
         if (!problem.empty())
             fail(sourceOf(s, key), key, "cannot write " + q(path) + ": its folder " + q(parent.empty() ? "." : parent.string()) + " " + problem);
     };

@@ -28,7 +28,12 @@ void DebugPanel::drawPlayer() const {
     const auto& p = session_.sim().player();
     ImGui::Text("tick %llu", static_cast<unsigned long long>(session_.tick()));
     ImGui::Text("feet %.2f %.2f %.2f", p.feet.x, p.feet.y, p.feet.z);
-    ImGui::Text("speed %.2f m/s %s", std::hypot(p.velocity.x, p.velocity.z), p.onGround ? "on ground" : "in air");
+    // Yaw and pitch as --start-pose takes them (degrees); the state as Quake's waterlevel sees it.
+    ImGui::Text("yaw %.1f pitch %.1f", p.yaw * 180.0 / 3.14159265358979323846, p.pitch * 180.0 / 3.14159265358979323846);
+    const char* state = p.waterLevel >= 2 ? (p.waterLevel == 3 ? "under water" : "swimming")
+                        : p.onGround      ? (p.waterLevel == 1 ? "wading" : "on ground")
+                                          : "in air";
+    ImGui::Text("speed %.2f m/s %s%s", std::hypot(p.velocity.x, p.velocity.z), state, p.crouching ? ", crouching" : "");
 }
 
 void DebugPanel::drawAo() {

@@ -53,8 +53,9 @@ constexpr unsigned kHiddenWindowSize = 64;
 constexpr double kPi = 3.14159265358979323846;
 
 // What the view needs of a frame besides the state: its time, the HUD's and crosshair's visibility.
-RenderView::Frame frameOf(const Settings& settings, bool menuOpen, double frameMs) {
+RenderView::Frame frameOf(const Settings& settings, bool menuOpen, double frameMs, std::string notice) {
     RenderView::Frame frame;
+    frame.notice = std::move(notice);
     frame.frameMs = frameMs;
     frame.frameMsIsFixed = settings.headless;
     frame.hudVisible = settings.hud;
@@ -220,10 +221,14 @@ void GameApp::handleActions() {
             case Action::Menu: setMenuOpen(!menu_->isOpen()); break;
             case Action::Screenshot: {
                 // F12 inside the frame: a folder that cannot be written costs the picture, not the game.
-                const std::string path = "obscura-" + std::to_string(session_->tick()) + ".png";
+                // Where it went (or why not) shows on the HUD for a while, in game ticks (replays repeat).
+                std::error_code ec;
+                const std::string path = std::filesystem::absolute("obscura-" + std::to_string(session_->tick()) + ".png", ec).string();
                 const std::string problem = view_->saveScreenshot(path);
                 if (problem.empty()) std::cout << "screenshot " << path << "\n";
                 else std::cerr << "obscura: F12 screenshot: " << problem << "; playing on\n";
+                notice_ = problem.empty() ? "F12: wrote " + path : "F12: no screenshot: " + problem;
+                noticeUntilTick_ = session_->tick() + static_cast<std::uint64_t>(session_->durations().centrePrintTicks);
                 break;
             }
             case Action::CycleAo:
@@ -279,12 +284,13 @@ void GameApp::followState(double alpha) {
 
 void GameApp::present(double alpha, double frameMs) {
     followState(alpha);
-    view_->draw(*session_, frameOf(settings_, menu_->isOpen(), frameMs));
+    view_->draw(*session_, frameOf(settings_, menu_->isOpen(), frameMs, notice()));
+    afterUiFrame();
 }
 
 void GameApp::skipDraw(double alpha, double frameMs) {
     followState(alpha);
-    view_->skipDraw(frameOf(settings_, menu_->isOpen(), frameMs));
+    view_->skipDraw(frameOf(settings_, menu_->isOpen(), frameMs, notice()));
 }
 
 bool GameApp::paused() const { return menu_->isOpen(); }
@@ -397,12 +403,11 @@ int GameApp::run() {
     if (!settings_.screenshot.empty()) {
         writeScreenshot(settings_.screenshot);
         std::cout << "screenshot " << settings_.screenshot << "\n";
-        // Where the camera was, in --start-pose's form: the player may have been moved by physics
-        // from the pose asked for, and tools/aoref traces its reference from this one.
-        const auto& p = session_->sim().player();
-        const Vec3 eye = p.eye();
-        std::printf("camera-pose %.4f %.4f %.4f %.4f %.4f\n", eye.x, eye.y, eye.z, p.yaw * 180.0 / kPi, p.pitch * 180.0 / kPi);
     }
+    // Where the camera ended, in --start-pose's form, for every run (a replay's captures print
+    // theirs too): the player may have been moved by physics from the pose asked for, and
+    // tools/aoref traces its reference from this one.
+    std::cout << "camera-pose " << cameraPose() << "\n";
     if (!settings_.volumeDump.empty()) view_->writeBufferDump("volumeMap", settings_.volumeDump);
     if (!settings_.lightDump.empty()) view_->writeBufferDump("litMap", settings_.lightDump);
     if (!settings_.irradianceDump.empty()) view_->writeIrradianceDump(settings_.irradianceDump);
@@ -425,6 +430,16 @@ std::size_t GameApp::signHoles() const {
     for (const auto& h : session_->signs().holes()) n += h.holes().size();
     return n;
 }
+
+std::string GameApp::cameraPose() const {
+    const auto& p = session_->sim().player();
+    const Vec3 eye = p.eye();
+    char line[160];
+    std::snprintf(line, sizeof line, "%.4f %.4f %.4f %.4f %.4f", eye.x, eye.y, eye.z, p.yaw * 180.0 / kPi, p.pitch * 180.0 / kPi);
+    return line;
+}
+
+std::string GameApp::notice() const { return session_ && session_->tick() < noticeUntilTick_ ? notice_ : std::string(); }
 
 std::string GameApp::summaryLine() const {
     const auto& p = session_->sim().player();

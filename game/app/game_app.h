@@ -15,7 +15,9 @@
 
 #include <array>
 #include <memory>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace OgreBites { struct ImGuiInputListener; }
 
@@ -72,6 +74,7 @@ private:
     void writeScreenshot(const std::string& path) override;
     void finishFrame() override;
     std::string stateHashHex() const override;
+    std::string cameraPose() const override;
     double smokeRenderThreadMs() const override;
 
     void load();
@@ -82,11 +85,14 @@ private:
     void setMenuOpen(bool open);
     void setPanelVisible(bool visible);
     void updatePointerGrab();
+    void afterUiFrame();  // releases held back for ImGui (mouseReleased)
+    void changeLevel(const map::LevelEntity& trigger);  // game_app_level.cpp
     void resizeWindow(int width, int height);
     void writeRecording();
     std::string rendererDescription() const;
     std::string dataPath(const std::string& relative) const;
     std::string summaryLine() const;
+    std::string notice() const;  // the HUD's notice line while it lasts, else empty
     std::size_t signHoles() const;
 
     Settings settings_;
@@ -94,11 +100,15 @@ private:
     InputState input_;
 
     std::unique_ptr<Session> session_;
+    std::string notice_;                 // the last F12's news for the HUD
+    std::uint64_t noticeUntilTick_ = 0;  // shown until this simulation tick
     std::unique_ptr<RenderView> view_;
     std::unique_ptr<GameAudio> audio_;
     std::unique_ptr<PauseMenu> menu_;
     std::unique_ptr<DebugPanel> panel_;
     std::unique_ptr<OgreBites::ImGuiInputListener> imguiInput_;  // the menu's and the panel's mouse and keys
+    std::set<unsigned char> uiPressedUnseen_;                    // UI buttons pressed since the last UI frame
+    std::vector<OgreBites::MouseButtonEvent> uiReleasesDue_;     // their releases, held for the next frame
 
     std::unique_ptr<replay::Script> script_;      // --replay / --timedemo
     std::unique_ptr<replay::Recorder> recorder_;  // --record

@@ -80,7 +80,10 @@ bool GameApp::mousePressed(const OgreBites::MouseButtonEvent& evt) {
     const std::string name = keyNameFromMouseButton(evt.button);
     if (routing().mouseToUi()) {
         // A menu binding waiting for its key may take a button; else the click is the UI's, never a shot.
-        if (!(routing().keysToUi() && menu_->offerKey(name))) imguiInput_->mousePressed(evt);
+        if (!(routing().keysToUi() && menu_->offerKey(name))) {
+            imguiInput_->mousePressed(evt);
+            uiPressedUnseen_.insert(evt.button);
+        }
         return true;
     }
     onButton(name, true);
@@ -88,9 +91,18 @@ bool GameApp::mousePressed(const OgreBites::MouseButtonEvent& evt) {
 }
 
 bool GameApp::mouseReleased(const OgreBites::MouseButtonEvent& evt) {
-    if (routing().mouseToUi()) imguiInput_->mouseReleased(evt);
+    // ImGui 1.86 reads the buttons' state once a frame: a click whose press and release arrive
+    // between two frames would never be seen down. Its release waits for the next frame.
+    if (uiPressedUnseen_.count(evt.button)) uiReleasesDue_.push_back(evt);
+    else if (routing().mouseToUi()) imguiInput_->mouseReleased(evt);
     onButton(keyNameFromMouseButton(evt.button), false);  // a button held before the UI opened lets go
     return true;
+}
+
+void GameApp::afterUiFrame() {
+    uiPressedUnseen_.clear();  // the frame just built saw them down
+    for (const auto& evt : uiReleasesDue_) imguiInput_->mouseReleased(evt);
+    uiReleasesDue_.clear();
 }
 
 bool GameApp::mouseWheelRolled(const OgreBites::MouseWheelEvent& evt) {

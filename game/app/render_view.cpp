@@ -198,6 +198,8 @@ RenderView::~RenderView() {
     levelGeometry_.reset();
     materials_.reset();
     shaders_.removeSceneManager(scene_);
+    // The window outlives the view (a trigger_changelevel builds the next level's on it).
+    target().removeViewport(viewport_->getZOrder());
     if (offscreen_) {
         Ogre::TextureManager::getSingleton().remove(offscreen_);
         offscreen_.reset();
@@ -330,6 +332,7 @@ void RenderView::draw(const Session& session, const Frame& frame) {
     hs.frameMs = frame.frameMs;
     hs.frameMsIsFixed = frame.frameMsIsFixed;
     hs.status.push_back("AO: " + aoStatus() + (frame_->view() == "ao" ? " (AO only)" : ""));
+    if (!frame.notice.empty()) hs.status.push_back(frame.notice);
     if (frame_->view() != "scene" && frame_->view() != "ao") hs.status.push_back("view: " + frame_->view() + " (V)");
     truth_->beforeRender(CameraPose{eye_, yaw_, pitch_, fov_}, static_cast<int>(viewport_->getActualWidth()),
                          static_cast<int>(viewport_->getActualHeight()), aoRadius_);

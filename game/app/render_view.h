@@ -60,6 +60,7 @@ public:
         bool frameMsIsFixed = false;  // headless: the fixed tick time, so captures repeat
         bool hudVisible = true;
         bool crosshair = true;        // off while the menu is open
+        std::string notice;           // a line of the game's own news (where F12 wrote), under the status lines
     };
     // The camera, for the sound's listener (metres, world space).
     struct Listener {

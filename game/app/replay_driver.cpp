@@ -109,7 +109,7 @@ void ReplayDriver::writeCapture(const std::string& name) {
     const fs::path partial = fs::path(captureDir_) / (name + ".partial.png");
     host_.writeScreenshot(partial.string());
     fs::rename(partial, final);
-    std::cout << "capture " << name << " " << final.string() << "\n";
+    std::cout << "capture " << name << " " << final.string() << "\ncamera-pose " << host_.cameraPose() << "\n";
 }
 
 std::string ReplayDriver::report() const {

@@ -35,6 +35,8 @@ public:
     virtual void writeScreenshot(const std::string& path) = 0;
     virtual void finishFrame() = 0;  // waits for the frame's rendering
     virtual std::string stateHashHex() const = 0;
+    // "x y z yaw pitch" of the eye now, in --start-pose's form (metres, degrees).
+    virtual std::string cameraPose() const = 0;
     // Milliseconds of the smoke's work on the render thread in the frame just drawn: its ticks'
     // queueing and waits for the worker, and the uploads (smoke/smoke_pipeline.h).
     virtual double smokeRenderThreadMs() const = 0;

@@ -267,8 +267,9 @@ TEST(SettingsBoundary, OutputsAreCheckedWritableBeforeTheRun) {
         }
         return std::string();
     };
-    EXPECT_EQ(outputError({"--screenshot", "/nonexistent/shot.png"}),
-              "command line: setting 'screenshot': cannot write '/nonexistent/shot.png': its folder '/nonexistent' does not exist");
+    EXPECT_EQ(outputError({"--screenshot", "/proc/nonexistent/shot.png"}),
+              "command line: setting 'screenshot': cannot write '/proc/nonexistent/shot.png': its folder '/proc/nonexistent' cannot be "
+              "created (No such file or directory)");
     EXPECT_EQ(outputError({"--record", "/etc/passwd/x.replay"}),
               "command line: setting 'record': cannot write '/etc/passwd/x.replay': its folder '/etc/passwd' is not a folder");
     EXPECT_EQ(outputError({"--record", "/proc/x.replay"}),
@@ -281,9 +282,13 @@ TEST(SettingsBoundary, OutputsAreCheckedWritableBeforeTheRun) {
                            "--replay", "x.replay", "--capture-dir", testing::TempDir() + "caps/new"}),
               "");
     EXPECT_TRUE(std::filesystem::is_directory(testing::TempDir() + "caps/new"));
-    const std::string cfg = writeTemp("obscura_out.cfg", "\nscreenshot = /nonexistent/a.png\n");
-    EXPECT_EQ(outputError({"--config", cfg}),
-              cfg + ":2: setting 'screenshot': cannot write '/nonexistent/a.png': its folder '/nonexistent' does not exist");
+    // A screenshot's (and a dump's, a recording's) folder is made like the capture folder.
+    std::filesystem::remove_all(testing::TempDir() + "shots");
+    EXPECT_EQ(outputError({"--screenshot", testing::TempDir() + "shots/new/a.png"}), "");
+    EXPECT_TRUE(std::filesystem::is_directory(testing::TempDir() + "shots/new"));
+    const std::string cfg = writeTemp("obscura_out.cfg", "\nscreenshot = /proc/nonexistent/a.png\n");
+    EXPECT_EQ(outputError({"--config", cfg}), cfg + ":2: setting 'screenshot': cannot write '/proc/nonexistent/a.png': its folder "
+                                                    "'/proc/nonexistent' cannot be created (No such file or directory)");
 }
 
 TEST(SettingsBoundary, RecordingsCarryTheInputSettingsAndReplaysApplyThemFirst) {

@@ -145,7 +145,7 @@ f12)
     tap key F12
     settle
     finish
-    grep -q "^obscura: F12 screenshot: cannot write 'obscura-[0-9]*.png': .*; playing on$" "$out" ||
+    grep -q "^obscura: F12 screenshot: cannot write '/proc/obscura-[0-9]*.png': .*; playing on$" "$out" ||
         { echo "FAIL [f12]: no message for the unwritable folder:"; cat "$out"; exit 1; }
     mkdir "$work/shots"
     cd "$work/shots"; start; cd - >/dev/null
@@ -155,6 +155,8 @@ f12)
     shot=$(ls "$work"/shots/obscura-*.png 2>/dev/null | head -1)
     [ -n "$shot" ] && [ "$(head -c 4 "$shot" | tail -c 3)" = "PNG" ] ||
         { echo "FAIL [f12]: no PNG written:"; cat "$out"; exit 1; }
+    # It says where, with the full path (the HUD shows the same line for 2 s).
+    grep -q "^screenshot $shot$" "$out" || { echo "FAIL [f12]: no full path of $shot:"; cat "$out"; exit 1; }
     ;;
 x-gone)
     # The X server going away mid-run (a crashed or killed Xvfb, a closed SSH forward): one line
