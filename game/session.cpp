@@ -139,6 +139,7 @@ void Session::step(const sim::PlayerCommand& cmd) {
     for (const auto& e : events) {
         if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;
         if (e.type == sim::SimEventType::Message) showMessage(level_.entities.at(static_cast<std::size_t>(e.id)).value("message"));
+        if (e.type == sim::SimEventType::ChangeLevel) changeLevel_ = e.id;
     }
 }
 

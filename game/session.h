@@ -62,6 +62,11 @@ public:
     // at '\n'; empty when none shows. (The level's title, worldspawn's message, goes to the load
     // line and the window's title, as Quake prints it to the console: not into every capture.)
     const std::string& centreMessage() const { return centreTicks_ > 0 ? centreMessage_ : kNoMessage; }
+    // The trigger_changelevel the player touched, if any (its `map` is the next level); the game
+    // acts on it after the tick.
+    const map::LevelEntity* changeLevel() const {
+        return changeLevel_ < 0 ? nullptr : &level_.entities.at(static_cast<std::size_t>(changeLevel_));
+    }
 
 private:
     void showMessage(const std::string& value);
@@ -79,6 +84,7 @@ private:
     double hitMarker_ = 0;  // 1 at a hit, fading over kHitMarkerFadeSeconds
     std::string centreMessage_;
     int centreTicks_ = 0;   // ticks it still shows (durations_.centrePrintTicks after it is set)
+    int changeLevel_ = -1;  // entity index of the trigger_changelevel touched
     static inline const std::string kNoMessage;
 };
 

@@ -172,7 +172,7 @@ std::vector<EntityClass> makeClasses() {
     c.push_back({"info_notnull", EntityKind::Point, R::Marker, BrushRole::Solid, "A named point that stays", {"Targetname"}, {}, "",
                  "-4 -4 -4, 4 4 4"});
     c.push_back({"info_teleport_destination", EntityKind::Point, R::Marker, BrushRole::Solid,
-                 "Where a trigger_teleport sends the player (teleporting is not implemented yet)", {"Targetname", "Yaw"}, {},
+                 "Where a trigger_teleport sends the player, facing its angle", {"Targetname", "Yaw"}, {},
                  "128 128 255", startSize});
     c.push_back({"path_corner", EntityKind::Point, R::Marker, BrushRole::Solid,
                  "A corner of a func_train's path (trains do not move yet)", {"Targetname"},
@@ -249,6 +249,11 @@ std::vector<EntityClass> makeClasses() {
                  {key("target", T::TargetDestination, "", "The info_teleport_destination"),
                   key("spawnflags", T::Flags, "0", "", {{"1", "Player only"}, {"2", "Silent"}})},
                  "", ""});
+    c.push_back({"trigger_hurt", EntityKind::Brush, R::Trigger, BrushRole::Volume, "Hurts the player inside it, at most once a second",
+                 {"Targetname"}, {key("dmg", T::Integer, "5", "Health taken a touch")}, "", ""});
+    c.push_back({"trigger_changelevel", EntityKind::Brush, R::Trigger, BrushRole::Volume,
+                 "Ends the level: the game loads 'map' from beside this one (a replay ends here)", {"Target"},
+                 {key("map", T::String, "", "The next level's name: <map>.map in this level's folder")}, "", ""});
     c.push_back({"trigger_push", EntityKind::Brush, R::Trigger, BrushRole::Volume, "Pushes what enters it along its angle",
                  {"Targetname", "MoveDirection"},
                  {key("speed", T::Float, "1000", "Push speed, units a second"), key("spawnflags", T::Flags, "0", "", {{"1", "Push once"}})}, "",

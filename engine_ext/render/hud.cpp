@@ -2,7 +2,9 @@
 #include "render/hud.h"
 
 #include <OgreImGuiOverlay.h>
+#include <OgreMaterialManager.h>
 #include <OgreOverlayManager.h>
+#include <OgreTextureManager.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -29,7 +31,15 @@ Hud::Hud() {
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini written into the working directory
 }
 
-Hud::~Hud() { Ogre::OverlayManager::getSingleton().destroy(overlay_); }
+Hud::~Hud() {
+    Ogre::OverlayManager::getSingleton().destroy(overlay_);
+    // OGRE 1.12's ImGuiOverlay leaves its font texture and material behind under fixed names: the
+    // next level's HUD (trigger_changelevel) would meet "ImGui/FontTex already exists".
+    for (Ogre::ResourceManager* rm : {static_cast<Ogre::ResourceManager*>(Ogre::TextureManager::getSingletonPtr()),
+                                      static_cast<Ogre::ResourceManager*>(Ogre::MaterialManager::getSingletonPtr())})
+        for (const char* name : {"ImGui/FontTex", "ImGui/material"})
+            if (const Ogre::ResourcePtr r = rm->getResourceByName(name, Ogre::RGN_AUTODETECT)) rm->remove(r);
+}
 
 void Hud::addPanelSection(std::string title, std::function<void()> draw) {
     sections_.emplace_back(std::move(title), std::move(draw));

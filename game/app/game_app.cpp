@@ -274,6 +274,7 @@ void GameApp::tick() {
     // One way: what happened this tick goes to sound, effects and the HUD.
     audio_->onEvents(session_->events());
     view_->onTick(session_->events());
+    if (const map::LevelEntity* trigger = session_->changeLevel()) changeLevel(*trigger);
 }
 
 void GameApp::followState(double alpha) {

@@ -24,6 +24,7 @@ enum class SimEventType {
     DryFire,          // trigger pulled on an empty rifle with nothing to reload
     Teleport,         // position = the player's new feet, id = the trigger_teleport's entity (views do not interpolate across it)
     Message,          // id = the entity whose `message` Quake centre-prints: it used its targets (SUB_UseTargets)
+    ChangeLevel,      // id = the trigger_changelevel the player touched (its `map` is the next level)
 };
 
 enum class Surface { Level, Target, Prop, Grenade };

@@ -53,12 +53,14 @@ void Simulation::applyLiquidDamage() {
     nextLiquidDamageTick_ = tick_ + static_cast<std::uint64_t>(std::llround(interval * config_.tickRate));
     player_.health -= damage;
     liquidDamage_ += damage;
-    if (player_.health <= 0) {
-        // Dead: back to the start, whole (no death sequence yet).
-        ++deaths_;
-        player_ = controller_->spawn(startFeet_, startYaw_, startPitch_);
-        player_.health = kPlayerHealth;
-    }
+}
+
+void Simulation::respawnIfDead() {
+    if (player_.health > 0) return;
+    // Dead (slime, lava, a trigger_hurt): back to the start, whole (no death sequence yet).
+    ++deaths_;
+    player_ = controller_->spawn(startFeet_, startYaw_, startPitch_);
+    player_.health = kPlayerHealth;
 }
 
 void Simulation::step(const PlayerCommand& cmd) {
@@ -70,6 +72,7 @@ void Simulation::step(const PlayerCommand& cmd) {
     std::vector<int> fired;
     movers_->step(player_, *controller_, fired);
     applyLiquidDamage();
+    respawnIfDead();
     physics_->step(dt());
     combat_->step(cmd, player_, before, rng_, events_);
     // Shootable movers hit this tick open (the motion starts next tick).

@@ -80,6 +80,7 @@ public:
 
 private:
     void applyLiquidDamage();
+    void respawnIfDead();  // health at 0 or below (slime, lava, trigger_hurt): back to the start
 
     SimConfig config_;
     map::LiquidQuery liquids_;  // before controller_, which points at it

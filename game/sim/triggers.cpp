@@ -19,6 +19,8 @@ constexpr double kMaxVelocity = 2000;       // u/s per axis: Quake's sv_maxveloc
 // its feet) is put there: the feet land 3 u above the mark.
 constexpr double kTeleportFeetAbove = 27 - 24;
 constexpr int kNoTouch = 1, kPushOnce = 1;  // spawnflags
+constexpr double kHurtDefaultDamage = 5;    // trigger_hurt's `dmg`
+constexpr double kHurtInterval = 1;         // s: hurt_touch turns itself off this long after a hurt
 // Firings that fire more (a relay naming itself) stop this deep: a level loop cannot hang a tick.
 constexpr int kMaxFireDepth = 16;
 
@@ -53,6 +55,8 @@ Triggers::Triggers(const map::Level& level, double tickRate, const EntityKeys& k
         else if (c == "trigger_counter") t.kind = Kind::Counter;
         else if (c == "trigger_teleport") t.kind = Kind::Teleport;
         else if (c == "trigger_push") t.kind = Kind::Push;
+        else if (c == "trigger_hurt") t.kind = Kind::Hurt;
+        else if (c == "trigger_changelevel") t.kind = Kind::ChangeLevel;
         else {
             if (startsWith(c, "trigger_") && std::find(unsimulated.begin(), unsimulated.end(), c) == unsimulated.end()) {
                 unsimulated.push_back(c);
@@ -90,6 +94,11 @@ Triggers::Triggers(const map::Level& level, double tickRate, const EntityKeys& k
             t.push = Vec3{cap(v.x), cap(v.y), cap(v.z)} / keys.unitsPerMetre();
             t.pushOnce = (flags & kPushOnce) != 0;
         }
+        if (t.kind == Kind::Hurt) {
+            t.damage = std::max(0, static_cast<int>(std::lround(keys.number(e, "dmg", kHurtDefaultDamage))));
+            t.wait = std::max(1L, std::lround(kHurtInterval * tickRate));
+        }
+        if (t.kind == Kind::ChangeLevel && e.value("map").empty()) keys.warn(e, "has no 'map'; touching it ends the level with no next map");
         triggers_.push_back(t);
     }
 }
@@ -192,6 +201,19 @@ void Triggers::step(PlayerState& player, double radius, PhysicsWorld& physics, M
             player.velocity = t.push;
             if (t.pushOnce) t.removed = true;
             break;
+        case Kind::Hurt:  // hurt_touch: the damage, then off for a second
+            if (t.cooldown > 0) break;
+            player.health -= t.damage;
+            t.cooldown = t.wait;
+            break;
+        case Kind::ChangeLevel: {  // changelevel_touch: its targets fire, then the level ends (once)
+            t.removed = true;
+            fired.push_back(t.entity);
+            SimEvent ev = SimEvent::at(SimEventType::ChangeLevel, player.feet);
+            ev.id = t.entity;
+            events.push_back(ev);
+            break;
+        }
         case Kind::Relay:
         case Kind::Counter: break;
         }

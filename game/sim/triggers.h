@@ -2,7 +2,8 @@
 // (and trigger_secret, a once), trigger_multiple (`wait` 0.2 s), trigger_relay, trigger_counter
 // (fires on its `count`th use, default 2), trigger_teleport (to the
 // info_teleport_destination named by `target`), trigger_push (`angle`, `speed` x 10 u/s, as
-// QuakeC's trigger_push_touch). A trigger is the box around its brushes (Quake tests the
+// QuakeC's trigger_push_touch), trigger_hurt (`dmg`, default 5, at most once a second) and
+// trigger_changelevel (a ChangeLevel event naming it: the game loads its `map`). A trigger is the box around its brushes (Quake tests the
 // absmin/absmax boxes too) and fires when the player's box is in it. Firing an entity uses its
 // `target` (every entity of that targetname: movers, triggers) and removes its `killtarget`
 // triggers, after its `delay`. Everything that evolves is in the state hash.
@@ -46,7 +47,7 @@ public:
     void hash(StateHasher& h) const;
 
 private:
-    enum class Kind { Once, Multiple, Relay, Counter, Teleport, Push };
+    enum class Kind { Once, Multiple, Relay, Counter, Teleport, Push, Hurt, ChangeLevel };
     struct Trigger {
         Kind kind = Kind::Multiple;
         int entity = 0;
@@ -58,6 +59,7 @@ private:
         int destination = -1;   // teleport: entity index
         Vec3 push;              // push: the velocity it sets, m/s
         bool pushOnce = false;
+        int damage = 0;         // hurt: health taken a touch (`dmg`)
         std::string targetname;
         // state
         long cooldown = 0;      // ticks until it may fire again (multi_wait); teleport: ticks it stays enabled

@@ -77,10 +77,10 @@ TEST(EntityClasses, UnknownClassesAreCountedByName) {
 
 TEST(EntityClasses, BrushRolesComeFromTheTableAndUnknownBrushEntitiesFollowQuake) {
     const std::string text = entity("\"classname\" \"worldspawn\"", cube(0, 0, 0)) +
-                             entity("\"classname\" \"func_door\"", cube(100, 0, 0)) +            // mover: static solid today
+                             entity("\"classname\" \"func_door\"", cube(100, 0, 0)) +            // mover: solid
                              entity("\"classname\" \"trigger_push\"", cube(200, 0, 0)) +         // volume
                              entity("\"classname\" \"func_detail_illusionary\"", cube(300, 0, 0)) +
-                             entity("\"classname\" \"trigger_hurt\"", cube(400, 0, 0)) +         // unknown trigger_: volume
+                             entity("\"classname\" \"trigger_fog\"", cube(400, 0, 0)) +          // unknown trigger_: volume
                              entity("\"classname\" \"func_rotate_door\"", cube(500, 0, 0));      // unknown func_: solid
     const Level l = compile(text);
     ASSERT_EQ(l.brushes.size(), 6u);
@@ -89,7 +89,7 @@ TEST(EntityClasses, BrushRolesComeFromTheTableAndUnknownBrushEntitiesFollowQuake
     EXPECT_TRUE(!l.brushes[3].solid && l.brushes[3].visible);
     EXPECT_TRUE(!l.brushes[4].solid && !l.brushes[4].visible);
     EXPECT_TRUE(l.brushes[5].solid && l.brushes[5].visible);
-    EXPECT_EQ(l.unknownClassnames, (std::vector<std::string>{"trigger_hurt", "func_rotate_door"}));
+    EXPECT_EQ(l.unknownClassnames, (std::vector<std::string>{"trigger_fog", "func_rotate_door"}));
 }
 
 TEST(EntityClasses, OnlyTheTablesLightClassesAreLights) {
