@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds Obscura and launches it on the default level (extra arguments go to the game, e.g.
-# --level ../shared/maps/librequake/e3m4.map). On a machine with no X display it runs headless
+# --level media/third_party/librequake/e3m4.map). On a machine with no X display it runs headless
 # under Xvfb instead and writes a screenshot to out/, saying where.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -29,10 +29,7 @@ std::vector<std::string> levelSearchDirs(const std::string& levelPath, const std
 std::vector<std::string> levelAssetRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs) {
     const fs::path levelDir = fs::path(levelPath).parent_path();
     std::vector<std::string> roots = {(levelDir.empty() ? fs::path(".") : levelDir).string()};
-    for (const std::string& dir : searchDirs) {
-        roots.push_back((fs::path(dir) / "media").string());
-        roots.push_back((fs::path(dir) / ".." / "shared").string());
-    }
+    for (const std::string& dir : searchDirs) roots.push_back((fs::path(dir) / "media").string());
     return roots;
 }
 

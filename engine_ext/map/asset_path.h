@@ -27,8 +27,8 @@ AssetPath resolveAsset(const std::string& name, const std::vector<std::string>& 
 // (the checkout or the installed share folder) and the working directory.
 std::vector<std::string> levelSearchDirs(const std::string& levelPath, const std::string& dataDir);
 
-// The roots a level's files may resolve into: the level's folder, and `media/` and `../shared` of
-// each search folder.
+// The roots a level's files may resolve into: the level's folder and `media/` of each search
+// folder (the third-party data the tests use is vendored in media/third_party/).
 std::vector<std::string> levelAssetRoots(const std::string& levelPath, const std::vector<std::string>& searchDirs);
 
 // A level's files: its search folders and roots, worked out once.

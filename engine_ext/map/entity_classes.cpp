@@ -100,7 +100,7 @@ std::vector<EntityClass> makeClasses() {
         c.push_back({name, EntityKind::Point, R::Light, BrushRole::Solid, what, {"Light"}, {}, "255 255 64", "-8 -8 -8, 8 8 8"});
     // map_compile.cpp addModel; render/model_loader.cpp places it, session.cpp collides with it.
     c.push_back({"misc_model", EntityKind::Point, R::Model, BrushRole::Solid,
-                 "A static OGRE .mesh with a triangle collider (the file beside the level, in media/ or ../shared)",
+                 "A static OGRE .mesh with a triangle collider (the file beside the level, or in media/)",
                  {"Yaw"},
                  {key("model", T::String, "", "Mesh file or resource name (up to 255 characters)"),
                   key("scale", T::Float, "1", "Uniform scale, 0.001 to 1000"),

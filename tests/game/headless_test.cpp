@@ -110,8 +110,7 @@ TEST(Headless, HelpListsTheOptions) {
 }
 
 TEST(Headless, MiscModelLoadsAMeshWithFallbackMaterials) {
-    const fs::path mesh = fs::path(OBSCURA_SHARED_DIR) / "scenes/sibenik.mesh";
-    if (!fs::exists(mesh)) GTEST_SKIP() << "no " << mesh;
+    const fs::path mesh = fs::path(OBSCURA_THIRD_PARTY_DIR) / "scenes/sibenik.mesh";
     const std::string map = temp("sibenik.map");
     std::ofstream(map) << "{\n\"classname\" \"worldspawn\"\n}\n{\n\"classname\" \"info_player_start\"\n\"origin\" \"0 0 400\"\n}\n"
                        << "{\n\"classname\" \"misc_model\"\n\"origin\" \"0 0 0\"\n\"model\" \"" << mesh.string() << "\"\n}\n";

@@ -26,8 +26,7 @@ Session load(const Settings& s) { return Session(s, Session::loadLevel(s, nullpt
 
 TEST(Session, AMiscModelBecomesAColliderWithoutTheRenderer) {
     const std::string map = std::string(OBSCURA_SOURCE_DIR) + "/tests/ssao/views/sibenik.map";
-    if (!fs::exists(std::string(OBSCURA_SHARED_DIR) + "/scenes/sibenik.mesh")) GTEST_SKIP() << "no sibenik.mesh";
-    // The .map names ../shared/scenes/sibenik.mesh, found from the data folder. It has no brushes:
+    // The .map names media/third_party/scenes/sibenik.mesh, found from the data folder. It has no brushes:
     // the player stands on the cathedral's floor only if the model became a collider.
     const Settings s = settingsFor(map);
     std::vector<std::string> warnings;

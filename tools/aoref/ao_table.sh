@@ -26,7 +26,7 @@ mkdir -p "$out"
 export XDG_CACHE_HOME="$(pwd)/build/cache"
 W=320; H=180; I=${INTENSITY:-2}; RAYS=${RAYS:-256}; S=${SCALE:-4}; GW=$((W * S)); GH=$((H * S))
 RL=${LOCAL_RADIUS:-0.6}; RG=${LARGE_RADIUS:-2}
-arena=media/levels/arena.map e3m4=../shared/maps/librequake/e3m4.map sibenik=tests/ssao/views/sibenik.map
+arena=media/levels/arena.map e3m4=media/third_party/librequake/e3m4.map sibenik=tests/ssao/views/sibenik.map
 # name | level | eye "x y z yaw pitch" (world metres, degrees; yaw 0 faces -z, 90 faces -x; the arena's
 # map (x, y, z) is world (x, z, -y)) | crouch: the pose is a standing one and the player crouches (a
 # replay holding lctrl: the eye drops to 0.956 m; --start-pose alone cannot put the eye that low, the

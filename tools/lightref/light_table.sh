@@ -14,7 +14,7 @@ out=build/light_table
 mkdir -p "$out"
 export XDG_CACHE_HOME="$(pwd)/build/cache"
 W=${W:-160}; H=${H:-90}; SAMPLES=${SAMPLES:-256}
-views_map=tests/lightbake/levels/light_views.map arena=media/levels/arena.map e3m4=../shared/maps/librequake/e3m4.map
+views_map=tests/lightbake/levels/light_views.map arena=media/levels/arena.map e3m4=media/third_party/librequake/e3m4.map
 # name | level | eye "x y z yaw pitch" (world metres, degrees; yaw 0 faces -z, 90 faces -x)
 views=(
   "sealed|$views_map|1 1.65 -1 -45 -10"          # room A: sealed on all sides under sun and sky dome, no lamp
