@@ -39,7 +39,19 @@ std::vector<KeyGroup> makeGroups() {
           key("_light", T::Integer, "300", "Brightness when 'light' is absent (some tools write this)"),
           key("_color", T::Colour, "1 1 1", "Colour, 0..1 or 0..255"), key("color", T::Colour, "1 1 1", "Colour when '_color' is absent"),
           key("_sun", T::Integer, "0", "1: this light is the level's sun, along its mangle (unless worldspawn sets _sunlight)"),
-          key("_nostaticlight", T::Integer, "0", "1: lights nothing (ericw-tools: dynamic only)")}},
+          key("_nostaticlight", T::Integer, "0", "1: lights nothing (ericw-tools: dynamic only)"),
+          key("targetname", T::TargetSource, "", "Name (with spawnflags 1, START_OFF: dark until triggered)"),
+          key("target", T::TargetDestination, "", "An entity to aim at: a spotlight"),
+          key("mangle", T::String, "", "'yaw pitch roll' in degrees: a spotlight along it (when no target)"),
+          key("_cone", T::Float, "40", "Spotlight cone, degrees across (also 'angle' on a spotlight)"),
+          key("_softangle", T::Float, "0", "Spotlight inner cone at full light, degrees (0: none)"),
+          key("delay", T::Integer, "0", "Falloff: 0 linear, 1 1/d, 2 1/d^2, 3 none, 4 local minimum, 5 1/(d+128)^2"),
+          key("wait", T::Float, "1", "Distance scale of the falloff (ericw-tools)"),
+          key("_falloff", T::Float, "0", "Linear lights: the distance in map units where the light reaches 0 (0: from 'light')"),
+          key("_falloff_exponent", T::Float, "1", "Obscura: linear falloff's exponent (1 Quake's, 2 smoother)"),
+          key("_anglescale", T::Float, "0.5", "How much the angle of incidence dims the light (0 none, 1 Lambert; also _anglesense)"),
+          key("_anglesense", T::Float, "0.5", "The older name of _anglescale"),
+          key("spawnflags", T::Flags, "0", "", {{"1", "Start off (with a targetname)"}})}},
         // game/sim/combat.cpp Combat::Combat.
         {"Board",
          "A shooting-range board standing on its origin, facing its yaw",
@@ -68,6 +80,16 @@ std::vector<EntityClass> makeClasses() {
                   key("_sunlight_color", T::Colour, "1 1 1", "Sun colour, 0..255 or 0..1"),
                   key("_sunlight2", T::Float, "0", "Sky-dome fill light brightness (0 is none)"),
                   key("_sunlight2_color", T::Colour, "1 1 1", "Sky-dome colour, 0..255 or 0..1"),
+                  key("_sunlight_mangle", T::String, "", "Sun direction, as _sun_mangle (ericw-tools' other name)"),
+                  key("_sun_angle", T::String, "", "Sun direction, as _sun_mangle (another tool's name)"),
+                  key("_sunlight_color2", T::Colour, "", "Sky-dome colour, as _sunlight2_color"),
+                  key("_sunlight3", T::Float, "0", "Lower-dome fill light brightness (light from below; 0 is none)"),
+                  key("_sunlight3_color", T::Colour, "1 1 1", "Lower-dome colour (also _sunlight_color3)"),
+                  key("_sunlight_color3", T::Colour, "", "Lower-dome colour, as _sunlight3_color"),
+                  key("_minlight", T::Float, "0", "Light every surface gets at least (Quake units, 0..255)"),
+                  key("_minlight_color", T::Colour, "1 1 1", "Colour of _minlight (also _mincolor)"),
+                  key("_mincolor", T::Colour, "", "Colour of _minlight, as _minlight_color"),
+                  key("_dist", T::Float, "1", "Scale of every light's falloff distance (ericw-tools)"),
                   key("_ambient_sky", T::Colour, "", "Obscura: the ambient from above, linear RGB 0..1 (replaces _minlight's)"),
                   key("_ambient_ground", T::Colour, "", "Obscura: the ambient from below, linear RGB 0..1"),
                   key("_wateralpha", T::Float, "1", "Opacity of water (0..1; also 'wateralpha'): below 1 translucent"),
@@ -183,13 +205,13 @@ std::vector<EntityClass> makeClasses() {
                                     {"func_detail", "Detail brushes; compiled as world"},
                                     {"func_detail_wall", "Detail brushes; compiled as world"},
                                     {"func_detail_fence", "Detail brushes (fences); compiled as world"},
-                                    {"func_wall", "A wall entity; compiled as static world"}};
+                                    {"func_wall", "A wall entity; compiled with the world"}};
     for (const auto& [name, what] : solidGroups)
         c.push_back({name, EntityKind::Brush, R::Geometry, BrushRole::Solid, what, {}, {}, "", ""});
     c.push_back({"func_illusionary", EntityKind::Brush, R::Geometry, BrushRole::NonSolid, "Rendered but not solid", {}, {}, "", ""});
     c.push_back({"func_detail_illusionary", EntityKind::Brush, R::Geometry, BrushRole::NonSolid, "Detail brushes, rendered but not solid",
                  {}, {}, "", ""});
-    // Quake movers: static solid brushes until the movers land (the keys are Quake's).
+    // Quake movers (game/sim/movers.h; the keys are Quake's).
     c.push_back({"func_door", EntityKind::Brush, R::Mover, BrushRole::Solid, "A door",
                  {"Targetname", "Target", "MoveDirection"},
                  {key("speed", T::Float, "100", "Units a second"), key("wait", T::Float, "3", "Seconds open before closing (-1 stays open)"),
