@@ -118,6 +118,16 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
     Rng rng(seed);
     // +-0.04 red shift per name, so two brick walls with different names are not identical.
     const double tint = rng.uniform(-0.04f, 0.04f);
+    if (const map::ToolSurface tool = map::toolSurface(name); tool != map::ToolSurface::None) {
+        // A tool texture, seen only in the editor (the game draws none of them): its own colour
+        // with diagonal stripes, as editors show them (clip orange, trigger purple, hint cyan...).
+        using T = map::ToolSurface;
+        const Colour c = tool == T::Clip ? Colour{0.8, 0.45, 0.15} : tool == T::MonsterClip ? Colour{0.55, 0.35, 0.2}
+                         : tool == T::Trigger ? Colour{0.6, 0.3, 0.7} : tool == T::Hint ? Colour{0.25, 0.7, 0.75}
+                         : tool == T::Skip ? Colour{0.5, 0.5, 0.5} : tool == T::Origin ? Colour{0.3, 0.4, 0.8}
+                                            : Colour{0.75, 0.7, 0.3};
+        return [c](double u, double v) { return std::fmod((u + v) * 4.0, 1.0) < 0.5 ? c : c * 0.7; };
+    }
     if (has(name, "sky")) {
         // Blue sky (0.42, 0.58, 0.82) with white clouds where the fBm exceeds 0.45 (about half
         // the sky), ramping over 0.4 of noise range so cloud edges stay soft.

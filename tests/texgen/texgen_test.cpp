@@ -11,6 +11,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <set>
+#include <regex>
 #include <string>
 
 using namespace obscura;
@@ -237,13 +240,41 @@ TEST(Texgen, PngWriteFailureNamesTheFile) {
     }
 }
 
-TEST(TexgenTool, WritesOnePngPerNameWithSlashesReplaced) {
+TEST(TexgenTool, WritesOnePngPerNameWithItsFolders) {
     TempDir dir;
-    const std::string cmd = std::string(OBSCURA_TEXGEN_TOOL) + " " + (dir.path / "out").string() + " brick textures/metal_floor";
+    const std::string cmd = std::string(OBSCURA_TEXGEN_TOOL) + " " + (dir.path / "out").string() + " brick e1u1/metal_floor";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     EXPECT_EQ(readWithLibpng((dir.path / "out/brick.png").string()).rgba, texgen::generateTexture("brick", 128).rgba);
-    EXPECT_EQ(readWithLibpng((dir.path / "out/textures_metal_floor.png").string()).rgba,
-              texgen::generateTexture("textures/metal_floor", 128).rgba);
+    EXPECT_EQ(readWithLibpng((dir.path / "out/e1u1/metal_floor.png").string()).rgba,
+              texgen::generateTexture("e1u1/metal_floor", 128).rgba);
+    const std::string quiet = " 2>/dev/null";
+    EXPECT_NE(std::system((std::string(OBSCURA_TEXGEN_TOOL) + " " + (dir.path / "out").string() + " ../escape" + quiet).c_str()), 0);
+    EXPECT_FALSE(fs::exists(dir.path / "escape.png"));
+}
+
+// TrenchBroom's texture browser shows the build's generated/textures: every texture a shipped map
+// names (media/levels, tests/*/levels) is there, tool and liquid textures included.
+TEST(TexgenTool, TheEditorSetHoldsEveryTextureTheShippedMapsUse) {
+    std::set<std::string> used;
+    const std::regex face(R"(^\( [^)]*\) \( [^)]*\) \( [^)]*\) (\S+))");
+    std::vector<fs::path> maps;
+    for (const auto& e : fs::directory_iterator(fs::path(OBSCURA_SOURCE_DIR) / "media/levels"))
+        if (e.path().extension() == ".map") maps.push_back(e.path());
+    for (const auto& suite : fs::directory_iterator(fs::path(OBSCURA_SOURCE_DIR) / "tests"))
+        if (fs::is_directory(suite.path() / "levels"))
+            for (const auto& e : fs::directory_iterator(suite.path() / "levels"))
+                if (e.path().extension() == ".map") maps.push_back(e.path());
+    for (const fs::path& m : maps) {
+        std::ifstream in(m);
+        std::string line;
+        std::smatch hit;
+        while (std::getline(in, line))
+            if (std::regex_search(line, hit, face)) used.insert(hit[1]);
+    }
+    ASSERT_GE(maps.size(), 10u);
+    for (const char* t : {"brick", "trigger", "clip", "hint", "*water1", "sky"}) EXPECT_TRUE(used.count(t)) << t;  // the scan reads faces
+    for (const std::string& t : used)
+        EXPECT_TRUE(fs::is_regular_file(fs::path(OBSCURA_GENERATED_DIR) / "textures" / (t + ".png"))) << t << " is not in the editor's set";
 }
 
 TEST(TexgenTool, FailsCleanlyOnBadArguments) {
