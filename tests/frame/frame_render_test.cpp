@@ -156,6 +156,13 @@ TEST(FrameRender, EveryViewShowsSomethingElseAndAnUnknownViewIsAnError) {
         const obscura::Image shown = render("view_" + view, "--ssao horizon --view " + view, &r);
         EXPECT_EQ(offLines(r.out), 0u) << view << ":\n" << r.out;
         EXPECT_GT(differing(shown, scene, 8), scene.rgba.size() / 20) << view << " looks like the picture";
+        if (view == "depth") {
+            // A log scale (white 0.25 m, black 64 m): the arena's court reads in greys. The old
+            // linear 0..50 m ramp put 76 % of this view above 200 (mean 214).
+            std::size_t bright = 0;
+            for (std::size_t i = 0; i < shown.rgba.size(); i += 4) bright += shown.rgba[i] > 200;
+            EXPECT_LT(bright, shown.rgba.size() / 4 / 10) << "the depth view is almost white";
+        }
     }
     const ProcessResult bad = game("--view bogus");
     EXPECT_NE(bad.code, 0);
