@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -12,6 +13,7 @@
 namespace obscura {
 
 namespace {
+constexpr float kMenuMargin = 8;  // pixels kept clear round the menu at any window size
 // Common 16:9 sizes; the current one is added if it is not among them.
 const std::pair<int, int> kResolutions[] = {{960, 540}, {1280, 720}, {1600, 900}, {1920, 1080}};
 
@@ -67,6 +69,7 @@ void PauseMenu::draw() {
     if (!open_) return;
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(io.DisplaySize.x - 2 * kMenuMargin, io.DisplaySize.y - 2 * kMenuMargin));
     ImGui::Begin("Paused", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
     auto click = [this] { if (hooks_.click) hooks_.click(); };
 
@@ -95,7 +98,18 @@ void PauseMenu::draw() {
             }
         ImGui::EndCombo();
     }
-    if (ImGui::CollapsingHeader("key bindings")) drawBindings();
+    if (ImGui::CollapsingHeader("key bindings")) {
+        // The list scrolls in its own region, so Resume, Save and Quit stay on screen however small
+        // the window (at 960 x 540 the open list pushed them off the bottom): it takes what the
+        // frame has left below it, at least three rows.
+        const float row = ImGui::GetFrameHeightWithSpacing();
+        const float list = row * (static_cast<float>(Action::Count) + 1);
+        const float below = 3 * row + ImGui::GetStyle().WindowPadding.y * 2;
+        const float avail = io.DisplaySize.y - 2 * kMenuMargin - ImGui::GetCursorPosY() - below;
+        ImGui::BeginChild("bindings", ImVec2(0, std::clamp(list, 3 * row, std::max(3 * row, avail))));
+        drawBindings();
+        ImGui::EndChild();
+    }
 
     ImGui::Separator();
     if (ImGui::Button("Resume")) {

@@ -6,7 +6,7 @@
 # SIGTERM (which must end it cleanly and promptly) and reads the `summary` line the game prints.
 # The server is private because the suite's is shared: in CI (ctest -j2) another test's window
 # took the keyboard focus mid-case and a jump, a reload and an F1 went to it.
-# Usage: window_input_test.sh GAME CASE   (cases: taps, ao-cycle, panel-mouse, menu-mouse, f12, x-gone)
+# Usage: window_input_test.sh GAME CASE   (cases: taps, ao-cycle, panel-mouse, menu-mouse, menu-click, f12, x-gone)
 set -euo pipefail
 game=$(realpath "${1:?usage: window_input_test.sh GAME CASE}")
 case_name=${2:?usage: window_input_test.sh GAME CASE}
@@ -27,9 +27,9 @@ own_x() {  # own_x: starts a private Xvfb (the display number it picks itself); 
 own_x
 
 # A known view: the courtyard, facing yaw 30, level; long enough a run that only SIGTERM ends it.
-start() {  # start [game options...]: sets pid, win, out
+start() {  # [W=.. H=..] start [game options...]: sets pid, win, out (320 x 180 unless W, H say)
     out=$work/game.out
-    "$game" --width 320 --height 180 --hud off --ticks 1000000 --start-pose '0 1.65 0 30 0' "$@" >"$out" 2>&1 &
+    "$game" --width "${W:-320}" --height "${H:-180}" --hud off --ticks 1000000 --start-pose '0 1.65 0 30 0' "$@" >"$out" 2>&1 &
     pid=$!
     win=$(timeout 60 xdotool search --sync --onlyvisible --pid "$pid" | head -1) ||
         { echo "no window appeared:"; cat "$out"; exit 1; }
@@ -137,6 +137,20 @@ menu-mouse)
     expect shots 0
     expect yaw 30.00
     expect pitch 0.00
+    ;;
+menu-click)
+    # An instant click (press and release inside one frame) on the menu's Resume button closes it:
+    # ImGui reads the buttons once a frame, so the game holds the release for the next frame. Then
+    # a click fires a round, which it would not with the menu still open.
+    W=640 H=360 start
+    tap key Escape
+    xdotool mousemove --window "$win" 178 284  # Resume, as tests/replay/references/pause_menu/menu.png shows it
+    sleep "$TAP"                               # the pointer settles (a frame hovers the button)
+    tap click 1
+    tap click 1
+    settle
+    finish
+    expect shots 1
     ;;
 f12)
     # F12 where the game cannot write (/proc, unwritable even for root) costs the picture, not
