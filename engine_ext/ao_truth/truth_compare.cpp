@@ -52,6 +52,14 @@ std::vector<std::uint8_t> heatMapRgba(const ssao::AoImage& reference, const std:
     return out;
 }
 
+namespace {
+std::string fixed3(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", v);
+    return text;
+}
+}  // namespace
+
 std::vector<std::string> hudLines(const HudFacts& f) {
     // Short lines: the HUD of a 320 x 180 capture holds about 44 characters.
     if (f.show == Show::Off) return {};
@@ -65,12 +73,19 @@ std::vector<std::string> hudLines(const HudFacts& f) {
     lines.emplace_back(line);
     if (f.score) {
         const Score& s = *f.score;
-        const std::string at = s.rays < f.totalRays ? " @" + std::to_string(s.rays) : std::string();
-        std::snprintf(line, sizeof line, "%s: MAE %.3f, occluded %.3f %+.3f%s", f.mode.c_str(), s.mode.mae, s.mode.occludedMae,
-                      s.mode.occludedBias, at.c_str());
-        if (f.mode != "off") lines.emplace_back(line);  // off's own line follows
-        std::snprintf(line, sizeof line, "off: MAE %.3f, occluded %.3f (%.0f%%)", s.off.mae, s.off.occludedMae,
-                      100.0 * s.off.occludedShare());
+        // Words, not symbols: "error" is the mean absolute difference from the truth; the occluded
+        // pixels' line says which way the mode errs there ("too light": it misses occlusion).
+        const std::string at = s.rays < f.totalRays ? " (vs " + std::to_string(s.rays) + " rays)" : std::string();
+        std::snprintf(line, sizeof line, "%s: error %.3f%s", f.mode.c_str(), s.mode.mae, at.c_str());
+        if (f.mode != "off") {  // off's own lines follow
+            lines.emplace_back(line);
+            const double b = s.mode.occludedBias;
+            const std::string way = std::abs(b) < 0.0005 ? "no bias" : (b > 0 ? "too light " : "too dark ") + fixed3(std::abs(b));
+            std::snprintf(line, sizeof line, " occluded: error %.3f, %s", s.mode.occludedMae, way.c_str());
+            lines.emplace_back(line);
+        }
+        std::snprintf(line, sizeof line, "off: error %.3f, occluded (%.0f%%) %.3f", s.off.mae, 100.0 * s.off.occludedShare(),
+                      s.off.occludedMae);
         lines.emplace_back(line);
     }
     if (f.show == Show::HeatMap) {

@@ -84,21 +84,23 @@ TEST(TruthHud, LinesSayWhatIsShownTheProgressAndTheScores) {
     s.rays = 64;  // scored against the 64-ray reference: said so
     f.score = &s;
     lines = hudLines(f);
-    ASSERT_EQ(lines.size(), 3u);
-    EXPECT_EQ(lines[1], "horizon: MAE 0.100, occluded 0.150 +0.050 @64");
+    ASSERT_EQ(lines.size(), 4u);
+    EXPECT_EQ(lines[1], "horizon: error 0.100 (vs 64 rays)");
+    EXPECT_EQ(lines[2], " occluded: error 0.150, too light 0.050");
     s.rays = 256;
     f.rays = 256;
     f.show = Show::HeatMap;
     lines = hudLines(f);
-    ASSERT_EQ(lines.size(), 5u);
+    ASSERT_EQ(lines.size(), 6u);
     EXPECT_EQ(lines[0], "truth (T): heat map 80x45 256 rays");
-    EXPECT_EQ(lines[1], "horizon: MAE 0.100, occluded 0.150 +0.050");
-    EXPECT_EQ(lines[2], "off: MAE 0.237, occluded 0.350 (67%)");
-    EXPECT_EQ(lines[3], "heat: mode - truth, black 0,");
-    EXPECT_EQ(lines[4], "blue -0.5 (darker), orange +0.5");
+    EXPECT_EQ(lines[1], "horizon: error 0.100");
+    EXPECT_EQ(lines[2], " occluded: error 0.150, too light 0.050");
+    EXPECT_EQ(lines[3], "off: error 0.237, occluded (67%) 0.350");
+    EXPECT_EQ(lines[4], "heat: mode - truth, black 0,");
+    EXPECT_EQ(lines[5], "blue -0.5 (darker), orange +0.5");
     for (const auto& l : lines) EXPECT_LE(l.size(), 44u) << l;  // fits a 320 x 180 capture's HUD
     f.mode = "off";  // the mode is off: its line is off's
     lines = hudLines(f);
     ASSERT_EQ(lines.size(), 4u);
-    EXPECT_EQ(lines[1], "off: MAE 0.237, occluded 0.350 (67%)");
+    EXPECT_EQ(lines[1], "off: error 0.237, occluded (67%) 0.350");
 }
