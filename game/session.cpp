@@ -115,6 +115,7 @@ Session::Session(const Settings& settings, map::Level level, const Vec3& towardS
     for (const signs::SignSpec& s : signs_.specs()) signLamps.push_back({s.lamp, s.lightColour * s.intensity, s.range});
     smoke_.setSignLamps(std::move(signLamps));
     if (!settings.smokeAt.empty()) smoke_.spawn(parseVec3(settings.smokeAt));
+    worldtype_ = sim::worldtypeOf(level_);
 }
 
 void Session::showMessage(const std::string& value) {
@@ -138,7 +139,10 @@ void Session::step(const sim::PlayerCommand& cmd) {
     if (centreTicks_ > 0) --centreTicks_;
     for (const auto& e : events) {
         if (e.type == sim::SimEventType::TargetHit) hitMarker_ = 1.0;
-        if (e.type == sim::SimEventType::Message) showMessage(level_.entities.at(static_cast<std::size_t>(e.id)).value("message"));
+        if (e.type == sim::SimEventType::Message && e.notice != sim::Notice::None)
+            showMessage(sim::noticeText(e.notice, worldtype_));
+        else if (e.type == sim::SimEventType::Message)
+            showMessage(level_.entities.at(static_cast<std::size_t>(e.id)).value("message"));
         if (e.type == sim::SimEventType::ChangeLevel) changeLevel_ = e.id;
     }
 }

@@ -85,6 +85,7 @@ private:
     std::string centreMessage_;
     int centreTicks_ = 0;   // ticks it still shows (durations_.centrePrintTicks after it is set)
     int changeLevel_ = -1;  // entity index of the trigger_changelevel touched
+    int worldtype_ = 0;     // worldspawn's `worldtype` (Quake's key words: 0 key, 1 runekey, 2 keycard)
     static inline const std::string kNoMessage;
 };
 

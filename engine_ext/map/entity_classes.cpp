@@ -90,6 +90,7 @@ std::vector<EntityClass> makeClasses() {
                   key("_minlight_color", T::Colour, "1 1 1", "Colour of _minlight (also _mincolor)"),
                   key("_mincolor", T::Colour, "", "Colour of _minlight, as _minlight_color"),
                   key("_dist", T::Float, "1", "Scale of every light's falloff distance (ericw-tools)"),
+                  key("worldtype", T::Integer, "0", "What keys are called in messages: 0 key, 1 runekey, 2 keycard"),
                   key("_ambient_sky", T::Colour, "", "Obscura: the ambient from above, linear RGB 0..1 (replaces _minlight's)"),
                   key("_ambient_ground", T::Colour, "", "Obscura: the ambient from below, linear RGB 0..1"),
                   key("_wateralpha", T::Float, "1", "Opacity of water (0..1; also 'wateralpha'): below 1 translucent"),
@@ -129,6 +130,13 @@ std::vector<EntityClass> makeClasses() {
                   key("modelscale", T::Float, "1", "Scale when 'scale' is absent")},
                  "255 128 0", ""});
     // game/sim/physics_world.cpp addLevel.
+    // Quake's keys (game/sim/pickups.h): taken by touch, used up by the func_door that needs one.
+    c.push_back({"item_key1", EntityKind::Point, R::Game, BrushRole::Solid,
+                 "The silver key: taken by touch; opens a func_door with spawnflags 16 (not drawn yet)", {}, {}, "0 128 255",
+                 "-16 -16 -24, 16 16 32"});
+    c.push_back({"item_key2", EntityKind::Point, R::Game, BrushRole::Solid,
+                 "The gold key: taken by touch; opens a func_door with spawnflags 8 (not drawn yet)", {}, {}, "255 200 0",
+                 "-16 -16 -24, 16 16 32"});
     c.push_back({"prop_crate", EntityKind::Point, R::Game, BrushRole::Solid,
                  "A wooden crate: a Bullet box the player pushes and shots knock about (origin at its bottom centre)",
                  {"Yaw"},

@@ -3,6 +3,7 @@
 #include "sim/movers.h"
 
 #include "map/map_compile.h"
+#include "sim/pickups.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +25,7 @@ constexpr double kDoorFieldXY = 60, kDoorFieldZ = 8;          // u: the door tri
 constexpr double kDoorFieldRepeat = 1;                        // s: the field fires at most once a second
 // Door spawnflags (doors.qc), secret door spawnflags.
 constexpr int kDoorStartOpen = 1, kDoorDontLink = 4, kDoorGoldKey = 8, kDoorSilverKey = 16, kDoorToggle = 32;
+constexpr double kKeyDoorRepeat = 2;  // s: door_touch speaks again after this (attack_finished)
 constexpr int kSecretOpenOnce = 1, kSecret1stLeft = 2, kSecret1stDown = 4, kSecretNoShoot = 8, kSecretYesShoot = 16;
 // Boxes that share a face touch (Quake's EntitiesTouching is inclusive); 1 micrometre of slack
 // absorbs the rounding of coordinates divided by the units per metre.
@@ -119,7 +121,9 @@ void Movers::buildDoor(Mover& m, const map::LevelEntity& e) {
     slideAlongAngle(m, e, kDoorSpeed, kDoorWait, kDoorLip);
     const int flags = keys_.spawnflags(e);
     m.toggle = (flags & kDoorToggle) != 0;
-    if (flags & (kDoorGoldKey | kDoorSilverKey)) keys_.warn(e, "key doors need no key here: it opens like a plain door");
+    // A key door (sim/pickups.h): no trigger field, opened by touch with its key, then stays open.
+    m.keys = (flags & kDoorSilverKey ? kSilverKey : 0) | (flags & kDoorGoldKey ? kGoldKey : 0);
+    if (m.keys) m.wait = -1;
     if (flags & kDoorStartOpen) {
         std::swap(m.pos1, m.pos2);
         m.s.offset = m.pos1;
@@ -266,7 +270,7 @@ void Movers::linkDoors() {
         for (int d : m.group) {
             box.extend(movers_[d].bounds.min);
             box.extend(movers_[d].bounds.max);
-            quiet &= movers_[d].targetname.empty() && !movers_[d].shootable;
+            quiet &= movers_[d].targetname.empty() && !movers_[d].shootable && movers_[d].keys == 0;
         }
         const double upm = keys_.unitsPerMetre();
         m.field = quiet;
@@ -488,13 +492,25 @@ bool Movers::push(int i, const Vec3& to, PlayerState& player, const PlayerContro
     return true;
 }
 
+int Movers::keysNeeded(int i) const { return movers_[static_cast<std::size_t>(movers_[static_cast<std::size_t>(i)].master)].keys; }
+
+void Movers::unlock(int master, std::vector<int>& fired) {
+    for (int d : movers_[static_cast<std::size_t>(master)].group) movers_[static_cast<std::size_t>(d)].keys = 0;
+    doorFire(master, fired);
+}
+
 void Movers::step(PlayerState& player, const PlayerController& controller, std::vector<int>& fired) {
+    keyDoorsTouched_.clear();
     const map::Aabb body = playerBox(player, controller.tuning().radius);
     for (std::size_t k = 0; k < movers_.size(); ++k) {
         const int i = static_cast<int>(k);
         Mover& m = movers_[k];
         if (m.s.cooldown > 0 && m.kind == MoverKind::Door) --m.s.cooldown;
         if (m.kind == MoverKind::Button && !m.shootable && overlaps(moved(m.bounds, m.s.offset), body, kTouchReach)) buttonFire(i);
+        if (m.kind == MoverKind::Door && keysNeeded(i) && m.s.cooldown == 0 && overlaps(moved(m.bounds, m.s.offset), body, kTouchReach)) {
+            m.s.cooldown = std::lround(kKeyDoorRepeat * tickRate_);  // door_touch's attack_finished
+            keyDoorsTouched_.push_back(m.master);
+        }
         if (m.kind == MoverKind::Door && m.field && m.s.cooldown == 0 && overlaps(m.fieldBox, body)) {
             m.s.cooldown = std::lround(kDoorFieldRepeat * tickRate_);  // door_trigger_touch's attack_finished
             doorFire(i, fired);
@@ -538,6 +554,7 @@ void Movers::hash(StateHasher& h) const {
         h.add(static_cast<std::uint64_t>(s.timer));
         h.add(static_cast<std::uint64_t>(s.cooldown));
         h.add(s.moving);
+        if (m.keys) h.add(static_cast<std::int32_t>(m.keys));  // only key doors: other levels hash as before
     }
 }
 

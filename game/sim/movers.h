@@ -51,6 +51,11 @@ public:
     // One tick: the player's touches (buttons, the doors' trigger fields, the plats' inside
     // triggers), then every mover's motion with the player carried or pushed.
     void step(PlayerState& player, const PlayerController& controller, std::vector<int>& fired);
+    // Key doors (sim/pickups.h): the groups whose locked door the player touched this tick (at
+    // most once in 2 s each), the keys a door's group still needs, and opening it with them.
+    const std::vector<int>& keyDoorsTouched() const { return keyDoorsTouched_; }
+    int keysNeeded(int i) const;
+    void unlock(int master, std::vector<int>& fired);
 
     void hash(StateHasher& h) const;
 
@@ -75,6 +80,7 @@ private:
         double speed = 0;          // metres per tick
         long wait = 0;             // ticks; negative: never comes back
         bool toggle = false, shootable = false;
+        int keys = 0;              // door: kSilverKey | kGoldKey still needed (0 once unlocked)
         int master = -1;           // doors: the group's first door; others: itself
         std::vector<int> group;    // on the master: every door of the group (itself first)
         bool field = false;        // master door / plat: has a trigger volume
@@ -115,6 +121,7 @@ private:
     const EntityKeys& keys_;
     double tickRate_;
     std::vector<Mover> movers_;
+    std::vector<int> keyDoorsTouched_;  // this tick's (not state: cleared every step)
 };
 
 }  // namespace obscura::sim

@@ -23,11 +23,14 @@ enum class SimEventType {
     ReloadEnd,
     DryFire,          // trigger pulled on an empty rifle with nothing to reload
     Teleport,         // position = the player's new feet, id = the trigger_teleport's entity (views do not interpolate across it)
-    Message,          // id = the entity whose `message` Quake centre-prints: it used its targets (SUB_UseTargets)
+    Message,          // id = the entity whose `message` Quake centre-prints (it used its targets: SUB_UseTargets), or notice set
     ChangeLevel,      // id = the trigger_changelevel the player touched (its `map` is the next level)
 };
 
 enum class Surface { Level, Target, Prop, Grenade };
+
+// What a Message without an entity says (sim/pickups.h: noticeText words it).
+enum class Notice { None, NeedSilverKey, NeedGoldKey, GotSilverKey, GotGoldKey };
 
 struct SimEvent {
     SimEventType type = SimEventType::Shot;
@@ -37,6 +40,7 @@ struct SimEvent {
     double strength = 1;
     int id = -1;
     Surface surface = Surface::Level;
+    Notice notice = Notice::None;  // a Message's words when it is not an entity's `message`
 
     static SimEvent at(SimEventType type, const Vec3& position) {
         SimEvent e;

@@ -33,6 +33,7 @@ Simulation::Simulation(const map::Level& level, const SimConfig& config, const s
     keys_ = std::make_unique<EntityKeys>(level, warnings_);
     movers_ = std::make_unique<Movers>(level, *physics_, config.tickRate, *keys_);
     triggers_ = std::make_unique<Triggers>(level, config.tickRate, *keys_);
+    pickups_ = std::make_unique<Pickups>(level);
     if (config.overrideStart) {
         startFeet_ = config.startFeet;
         startYaw_ = config.startYaw;
@@ -71,6 +72,18 @@ void Simulation::step(const PlayerCommand& cmd) {
     triggers_->step(player_, controller_->tuning().radius, *physics_, *movers_, events_);
     std::vector<int> fired;
     movers_->step(player_, *controller_, fired);
+    pickups_->step(player_, controller_->tuning().radius, events_);
+    for (int door : movers_->keyDoorsTouched()) {  // door_touch: the key opens it and is used up
+        const int need = movers_->keysNeeded(door);
+        if (pickups_->holds(need)) {
+            pickups_->use(need);
+            movers_->unlock(door, fired);
+            continue;
+        }
+        SimEvent ev = SimEvent::at(SimEventType::Message, player_.feet);
+        ev.notice = need & kGoldKey && !pickups_->holds(kGoldKey) ? Notice::NeedGoldKey : Notice::NeedSilverKey;
+        events_.push_back(ev);
+    }
     applyLiquidDamage();
     respawnIfDead();
     physics_->step(dt());
@@ -124,6 +137,7 @@ std::uint64_t Simulation::stateHash() const {
     combat_->hash(h);
     movers_->hash(h);
     triggers_->hash(h);
+    pickups_->hash(h);
     h.add(rng_.state());
     h.add(rng_.increment());
     return h.value();

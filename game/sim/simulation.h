@@ -10,6 +10,7 @@
 #include "sim/combat.h"
 #include "sim/entity_keys.h"
 #include "sim/movers.h"
+#include "sim/pickups.h"
 #include "sim/physics_world.h"
 #include "sim/player_controller.h"
 #include "sim/sim_events.h"
@@ -58,6 +59,7 @@ public:
     // Moving brushes (doors, plats, buttons, trains) and triggers (sim/movers.h, sim/triggers.h).
     const Movers& movers() const { return *movers_; }
     const Triggers& triggers() const { return *triggers_; }
+    const Pickups& pickups() const { return *pickups_; }
     // What the level's movers and triggers could not use ("file:line: classname: problem").
     const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -91,6 +93,7 @@ private:
     std::unique_ptr<EntityKeys> keys_;
     std::unique_ptr<Movers> movers_;
     std::unique_ptr<Triggers> triggers_;
+    std::unique_ptr<Pickups> pickups_;
     std::vector<SimEvent> events_;
     PlayerState player_;
     Rng rng_;

@@ -28,11 +28,11 @@ std::set<std::string> registryKeys() {
 }
 
 // Every key name `text` reads, in every reader form the sources use:
-//   e.value("k"  e.has("k"  number(me, "k"  keys_.number(e, "k"  keys.positive(e, "k"  vec(me, "k"
+//   e.value("k"  e->value("k"  e.has("k"  number(me, "k"  keys_.number(e, "k"  keys.positive(e, "k"  vec(me, "k"
 //   numberOf(e, "k"  metresOf(e, "k"  readColour(e, "k"  numberKey(level, e, "k"  metres("k"
 //   k.number({"k1", "k2"}  k.colour({..})  k.mangle({..})  k.find({..})  (map_lights.cpp's lists)
 std::vector<std::string> keysRead(const std::string& text) {
-    static const std::regex single(R"((?:\.value\(|\.has\(|\b(?:number|positive|vec|numberOf|metresOf|readColour)\((?:me|e), |)"
+    static const std::regex single(R"((?:(?:\.|->)value\(|(?:\.|->)has\(|\b(?:number|positive|vec|numberOf|metresOf|readColour)\((?:me|e), |)"
                                    R"(\bnumberKey\(level, e, |\bmetres\()\"([A-Za-z_0-9]+)\")");
     static const std::regex list(R"(\b(?:number|colour|mangle|find)\(\{([^}]*)\})");
     static const std::regex quoted(R"(\"([A-Za-z_0-9]+)\")");
