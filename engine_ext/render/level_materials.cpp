@@ -1,6 +1,7 @@
 // See level_materials.h.
 #include "render/level_materials.h"
 
+#include "map/liquid.h"
 #include "map/surface_rules.h"
 #include "texgen/texgen.h"
 
@@ -104,7 +105,13 @@ const std::string& LevelMaterials::resolveBaked(const std::string& texture) {
     return cache_[key] = key;
 }
 
-const std::string& LevelMaterials::resolveLiquid(const std::string& texture, map::LiquidKind kind, double alpha) {
+const std::string& LevelMaterials::resolveLiquid(const std::string& rawTexture, map::LiquidKind kind, double alpha) {
+    // A Quake 2 liquid is one by its content bits, not its name ("e1u1/lava1", no '*'): with no
+    // authored material, its texture is drawn from the kind ("*lava/lava1"), not as a wall.
+    const bool authored = Ogre::MaterialManager::getSingleton().resourceExists("level/" + lower(rawTexture), group_);
+    const std::string texture = authored || (!rawTexture.empty() && rawTexture[0] == '*')
+                                    ? rawTexture
+                                    : "*" + std::string(map::liquidName(kind)) + "/" + std::string(map::textureBaseName(rawTexture));
     if (!(alpha < 1.0)) return resolve(texture);
     const long milli = std::lround(std::clamp(alpha, 0.0, 1.0) * 1000.0);
     const std::string key = "liquid/" + lower(texture) + "/" + std::to_string(milli);

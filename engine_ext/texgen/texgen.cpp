@@ -136,6 +136,14 @@ Shader styleFor(const std::string& name, std::uint32_t seed) {
             return mix(Colour{0.42, 0.58, 0.82}, Colour{0.86, 0.9, 0.95}, std::clamp((c - 0.45) * 2.5, 0.0, 1.0));
         };
     }
+    if (!name.empty() && name[0] == '*' && has(name, "tele")) {
+        // A teleporter: Quake's *teleport is a sparkling field, not water: violet with white
+        // where the fine noise peaks (about a fifth of the texels), so it never reads as a pool.
+        return [fbm, fine](double u, double v) {
+            const double spark = std::clamp((fine->at(u, v) - 0.55) * 4.0, 0.0, 1.0);
+            return mix(Colour{0.3, 0.2, 0.6} * (0.7 + 0.6 * fbm->at(u, v)), Colour{0.9, 0.9, 0.98}, spark);
+        };
+    }
     if (!name.empty() && name[0] == '*') {  // liquids: base colour +-25 % by the fBm (ripples)
         const Colour base = has(name, "lava") ? Colour{0.75, 0.28, 0.06} : has(name, "slime") ? Colour{0.25, 0.5, 0.15}
                                                                                           : Colour{0.15, 0.32, 0.45};

@@ -23,7 +23,7 @@ namespace {
 
 // Every style's keyword, with the liquids and an unknown name.
 const char* const kStyles[] = {"brick", "concrete", "plaster", "tile_floor", "metal_floor", "wood_trim", "crate",
-                               "stone", "grass", "sky", "*water", "*lava", "light1", "unknown_name_42"};
+                               "stone", "grass", "sky", "*water", "*lava", "*teleport", "clip", "light1", "unknown_name_42"};
 
 struct Mean {
     double r = 0, g = 0, b = 0;
@@ -125,6 +125,11 @@ TEST(Texgen, KeywordsPickTheStyle) {
     EXPECT_GT(water.b, water.r + 0.1) << "water is blue";
     const Mean lava = meanColour(texgen::generateTexture("*lava1", 64));
     EXPECT_GT(lava.r, lava.b + 0.3) << "lava is orange";
+    // A teleporter is violet with sparkles, not a pool of water (it was drawn as *water1's blue).
+    const Mean tele = meanColour(texgen::generateTexture("*teleport", 64));
+    EXPECT_GT(tele.r, tele.g + 0.05) << "teleporter is violet";
+    EXPECT_GT(tele.b, tele.r) << "teleporter is violet";
+    EXPECT_GT(tele.r - tele.g, water.r - water.g + 0.1) << "not water";
     const Mean sky = meanColour(texgen::generateTexture("sky", 64));
     EXPECT_GT(sky.b, sky.r + 0.1) << "sky is blue";
     const Mean wood = meanColour(texgen::generateTexture("crate_big", 64));
