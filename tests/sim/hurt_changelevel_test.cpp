@@ -9,15 +9,6 @@ using namespace obscura;
 using namespace obscura::sim;
 using namespace obscura::sim::testlevels;
 
-namespace {
-SimConfig startAt(const Vec3& feet) {
-    SimConfig c;
-    c.overrideStart = true;
-    c.startFeet = feet;
-    return c;
-}
-}  // namespace
-
 TEST(TriggerHurt, TakesItsDamageOnceASecondAndADeathRespawns) {
     map::Level l = floorLevel();
     addEntity(l, "trigger_hurt", {{"dmg", "10"}}, {{{-1, 0, -1}, {1, 2, 1}}});

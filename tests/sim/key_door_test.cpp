@@ -11,14 +11,6 @@ using namespace obscura::sim;
 using namespace obscura::sim::testlevels;
 
 namespace {
-SimConfig startAt(const Vec3& feet, double yaw = 0) {
-    SimConfig c;
-    c.overrideStart = true;
-    c.startFeet = feet;
-    c.startYaw = yaw;
-    return c;
-}
-
 std::vector<Notice> notices(const Simulation& s) {
     std::vector<Notice> out;
     for (const SimEvent& e : s.events())

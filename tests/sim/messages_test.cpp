@@ -11,13 +11,6 @@ using namespace obscura::sim;
 using namespace obscura::sim::testlevels;
 
 namespace {
-SimConfig startAt(const Vec3& feet) {
-    SimConfig c;
-    c.overrideStart = true;
-    c.startFeet = feet;
-    return c;
-}
-
 // The Message events' entity ids over `ticks` ticks of `cmd`, with the tick each came.
 std::vector<std::pair<int, int>> messages(Simulation& s, const PlayerCommand& cmd, int ticks) {
     std::vector<std::pair<int, int>> out;

@@ -20,14 +20,6 @@ using namespace obscura::sim::testlevels;
 namespace {
 constexpr double kUpm = 32;  // units per metre of the test levels (Quake's default)
 
-SimConfig startAt(const Vec3& feet, double yaw = 0) {
-    SimConfig c;
-    c.overrideStart = true;
-    c.startFeet = feet;
-    c.startYaw = yaw;
-    return c;
-}
-
 // A door 2 m wide (64 u), 2.5 m tall, 0.25 m thick across z = -5, sliding +X (angle 0).
 const std::pair<Vec3, Vec3> kDoorBox{{-1, 0, -5.125}, {1, 2.5, -4.875}};
 // Quake: moves 64 - 8 = 56 u at 100 u/s.

@@ -112,6 +112,15 @@ inline PlayerCommand walk(float forward = 1, float right = 0) {
     return c;
 }
 
+// A start at `feet` facing `yaw` instead of the level's info_player_start.
+inline SimConfig startAt(const Vec3& feet, double yaw = 0) {
+    SimConfig c;
+    c.overrideStart = true;
+    c.startFeet = feet;
+    c.startYaw = yaw;
+    return c;
+}
+
 inline void run(Simulation& s, const PlayerCommand& c, int ticks) {
     for (int i = 0; i < ticks; ++i) s.step(c);
 }

@@ -21,13 +21,6 @@ map::Level pool(double depth, map::LiquidKind kind = map::LiquidKind::Water) {
     return l;
 }
 
-SimConfig startAt(const Vec3& feet) {
-    SimConfig c;
-    c.overrideStart = true;
-    c.startFeet = feet;
-    return c;
-}
-
 double horizontalSpeed(const Simulation& s) { return std::hypot(s.player().velocity.x, s.player().velocity.z); }
 
 PlayerCommand jump() {
